@@ -1,0 +1,17 @@
+#pragma once
+// Helpers shared by the subcommands: option validators with messages that
+// name what was expected.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+
+namespace facadeslam::apps {
+
+// Exit codes, documented in the README.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitError = 1;       // bad input, failed run
+inline constexpr int kExitUsage = 2;       // bad command line
+
+// A file that must exist and be a regular file.
+void require_file(const std::filesystem::path& path, const std::string& what);
+
+}  // namespace facadeslam::apps

@@ -1,0 +1,10 @@
+#include "apps/commands.hpp"
+
+namespace facadeslam::apps {
+
+void add_evaluate_command(CLI::App& app) {
+  auto* evaluate = app.add_subcommand("evaluate", "Evaluate trajectories and labels against ground truth");
+  evaluate->require_subcommand(1);
+}
+
+}  // namespace facadeslam::apps

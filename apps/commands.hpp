@@ -1,0 +1,11 @@
+#pragma once
+// Each subcommand of `facadeslam` lives in its own cmd_*.cpp and registers
+// itself on the top-level CLI11 app here. Handlers throw facadeslam::Error on
+// bad input; main() turns that into one line on stderr and exit code 1.
+#include <CLI/CLI.hpp>
+
+namespace facadeslam::apps {
+
+void add_evaluate_command(CLI::App& app);
+
+}  // namespace facadeslam::apps

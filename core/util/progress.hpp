@@ -1,0 +1,38 @@
+#pragma once
+// A one-line progress bar for long jobs (replay, training, evaluation). It
+// draws only when both stdout and stderr are terminals and logging is not
+// quiet, so CI logs and pipes stay clean. Not thread-safe: drive it from the
+// thread that owns the loop.
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace facadeslam {
+
+class Progress {
+ public:
+  Progress(std::string label, std::size_t total);
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  // Sets the number of finished items; redraws at most ~10 times a second.
+  void update(std::size_t done, const std::string& status = {});
+  void finish();
+  bool enabled() const { return enabled_; }
+
+  static bool terminal_attached();
+
+ private:
+  void draw(const std::string& status);
+
+  std::string label_;
+  std::size_t total_;
+  std::size_t done_ = 0;
+  bool enabled_;
+  bool finished_ = false;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_draw_;
+};
+
+}  // namespace facadeslam
