@@ -24,18 +24,24 @@ function(facadeslam_library name)
   target_link_libraries(${name} PUBLIC facadeslam_options ${ARG_DEPS})
 endfunction()
 
-# facadeslam_test(NAME SOURCES ... DEPS ...): one gtest executable, its tests
-# registered with CTest. Tests run from the project root so that paths such as
-# ../shared/data and configs/ resolve as they do for a user.
+# facadeslam_test(NAME SOURCES ... DEPS ... [LABEL unit|regression]): one gtest
+# executable, its tests registered with CTest under the label (default
+# `unit`; CI runs the `unit` label again under the sanitizers, while the
+# `regression` tests, whole SLAM runs, only run in the optimised build).
+# Tests run from the project root so that paths such as ../shared/data and
+# configs/ resolve as they do for a user.
 function(facadeslam_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "LABEL" "SOURCES;DEPS" ${ARGN})
+  if(NOT ARG_LABEL)
+    set(ARG_LABEL unit)
+  endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE facadeslam_options ${ARG_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
     DISCOVERY_MODE PRE_TEST
-    PROPERTIES ENVIRONMENT "FACADESLAM_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+    PROPERTIES ENVIRONMENT "FACADESLAM_SOURCE_DIR=${PROJECT_SOURCE_DIR}" LABELS ${ARG_LABEL})
 endfunction()
 
 # facadeslam_bench(NAME SOURCES ... DEPS ...): one Google Benchmark program.

@@ -1,0 +1,34 @@
+#include "bench/bench_images.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace facadeslam::bench {
+
+cv::Mat facade_image(cv::Size size, std::string* source) {
+  const char* root = std::getenv("FACADESLAM_SOURCE_DIR");
+  const std::filesystem::path photo =
+      std::filesystem::path(root ? root : ".") / "../shared/data/opencv-samples/building.jpg";
+  cv::Mat image = cv::imread(photo.string(), cv::IMREAD_COLOR);
+  if (!image.empty()) {
+    cv::resize(image, image, size, 0, 0, cv::INTER_AREA);
+    if (source) *source = photo.lexically_normal().string();
+    return image;
+  }
+  image.create(size, CV_8UC3);
+  cv::RNG rng(12345);
+  rng.fill(image, cv::RNG::UNIFORM, cv::Scalar::all(90), cv::Scalar::all(160));
+  for (int i = 0; i < 400; ++i) {
+    const cv::Point p(rng.uniform(0, size.width), rng.uniform(0, size.height));
+    cv::rectangle(image, cv::Rect(p, cv::Size(rng.uniform(4, 40), rng.uniform(4, 40))),
+                  cv::Scalar(rng.uniform(0, 255), rng.uniform(0, 255), rng.uniform(0, 255)), cv::FILLED);
+  }
+  cv::GaussianBlur(image, image, cv::Size(3, 3), 0.8);
+  if (source) *source = "synthetic texture";
+  return image;
+}
+
+}  // namespace facadeslam::bench

@@ -1,0 +1,127 @@
+#include "core/image/fast_detector.hpp"
+
+#include <algorithm>
+
+#include <opencv2/features2d.hpp>
+
+#include "core/util/error.hpp"
+
+namespace facadeslam {
+namespace {
+
+// Bresenham circle of radius 3 used by FAST, in order around the circle.
+constexpr int kCircle[16][2] = {{0, -3}, {1, -3}, {2, -2}, {3, -1}, {3, 0},  {3, 1},  {2, 2},  {1, 3},
+                                {0, 3},  {-1, 3}, {-2, 2}, {-3, 1}, {-3, 0}, {-3, -1}, {-2, -2}, {-1, -3}};
+
+// FAST-9 score: the largest t for which some arc of 9 contiguous circle pixels
+// is entirely brighter than centre + t or entirely darker than centre - t.
+// Along a clean edge several pixels share that score; the fractional part,
+// Rosten's sum of absolute differences over the circle scaled below 1, breaks
+// the tie in favour of the pixel most unlike its surroundings: the corner itself.
+// The loops run over all 16 arc starts at once so the compiler vectorises them.
+float fast_score(const std::uint8_t* centre_ptr, const int (&offsets)[16]) {
+  const int centre = *centre_ptr;
+  std::int16_t diff[25];
+  for (int i = 0; i < 16; ++i) diff[i] = static_cast<std::int16_t>(centre_ptr[offsets[i]] - centre);
+  for (int i = 16; i < 25; ++i) diff[i] = diff[i - 16];
+  // Minimum over each arc of 9, for both signs, built from windows of 2, 4, 8.
+  std::int16_t lo2[24], hi2[24], lo4[22], hi4[22], lo8[18], hi8[18];
+  for (int i = 0; i < 24; ++i) {
+    lo2[i] = std::min(diff[i], diff[i + 1]);
+    hi2[i] = std::max(diff[i], diff[i + 1]);
+  }
+  for (int i = 0; i < 22; ++i) {
+    lo4[i] = std::min(lo2[i], lo2[i + 2]);
+    hi4[i] = std::max(hi2[i], hi2[i + 2]);
+  }
+  for (int i = 0; i < 18; ++i) {
+    lo8[i] = std::min(lo4[i], lo4[i + 4]);
+    hi8[i] = std::max(hi4[i], hi4[i + 4]);
+  }
+  std::int16_t best = 0, sad = 0;
+  for (int i = 0; i < 16; ++i) {
+    const std::int16_t brighter = std::min(lo8[i], diff[i + 8]);                                // all > centre + t
+    const std::int16_t darker = static_cast<std::int16_t>(-std::max(hi8[i], diff[i + 8]));      // all < centre - t
+    best = std::max(best, std::max(brighter, darker));
+    sad = static_cast<std::int16_t>(sad + std::abs(diff[i]));
+  }
+  return static_cast<float>(best) + static_cast<float>(sad) / (16.f * 256.f);
+}
+
+}  // namespace
+
+std::vector<Corner> detect_fast(const cv::Mat& grey, const FastOptions& options) {
+  if (grey.type() != CV_8UC1) throw Error("detect_fast: expected an 8-bit single-channel image");
+  if (options.threshold < 1 || options.cell_size < 1 || options.max_per_cell < 0 || options.border < 0)
+    throw Error("detect_fast: invalid options (threshold and cell_size >= 1, max_per_cell and border >= 0)");
+
+  // OpenCV's segment test finds the candidates (fast, vectorised). Its own
+  // non-maximum suppression needs a strict maximum, so a corner whose score
+  // ties with a neighbour's (common on rendered or clean synthetic images)
+  // vanishes entirely; we score the candidates and suppress with a raster-order
+  // tie-break instead, keeping exactly one pixel of every plateau.
+  std::vector<cv::KeyPoint> candidates;
+  cv::FAST(grey, candidates, options.threshold, /*nonmaxSuppression=*/false, cv::FastFeatureDetector::TYPE_9_16);
+
+  int offsets[16];
+  const int stride = static_cast<int>(grey.step1());
+  for (int i = 0; i < 16; ++i) offsets[i] = kCircle[i][1] * stride + kCircle[i][0];
+
+  cv::Mat scores(grey.size(), CV_32FC1, cv::Scalar(0));
+  for (const auto& kp : candidates) {
+    const int x = static_cast<int>(kp.pt.x), y = static_cast<int>(kp.pt.y);
+    scores.ptr<float>(y)[x] = fast_score(grey.ptr<std::uint8_t>(y) + x, offsets);
+  }
+
+  const int b = std::max(options.border, 3);  // the FAST circle needs 3 pixels
+  std::vector<Corner> corners;
+  corners.reserve(candidates.size() / 4);
+  for (const auto& kp : candidates) {
+    const int x = static_cast<int>(kp.pt.x), y = static_cast<int>(kp.pt.y);
+    if (x < b || y < b || x >= grey.cols - b || y >= grey.rows - b) continue;
+    const float* above = scores.ptr<float>(y - 1) + x;
+    const float* row = scores.ptr<float>(y) + x;
+    const float* below = scores.ptr<float>(y + 1) + x;
+    // Branch-free 3x3 maximum test; ties go to the neighbour that comes first
+    // in raster order (strictly greater than the earlier four, not less than
+    // the later four), so a plateau keeps exactly one pixel.
+    const float earlier = std::max(std::max(above[-1], above[0]), std::max(above[1], row[-1]));
+    const float later = std::max(std::max(row[1], below[-1]), std::max(below[0], below[1]));
+    if ((row[0] > earlier) & (row[0] >= later)) corners.push_back({x, y, row[0]});
+  }
+
+  if (options.max_per_cell > 0) {
+    // Bucket the corners by cell (counting sort: they are few cells and many
+    // corners), then keep the strongest `max_per_cell` of each bucket.
+    const int cells_x = (grey.cols + options.cell_size - 1) / options.cell_size;
+    const int cells_y = (grey.rows + options.cell_size - 1) / options.cell_size;
+    std::vector<std::size_t> cell_begin(static_cast<std::size_t>(cells_x * cells_y) + 1, 0);
+    std::vector<int> cell(corners.size());
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      cell[i] = (corners[i].y / options.cell_size) * cells_x + corners[i].x / options.cell_size;
+      ++cell_begin[static_cast<std::size_t>(cell[i]) + 1];
+    }
+    for (std::size_t c = 1; c < cell_begin.size(); ++c) cell_begin[c] += cell_begin[c - 1];
+    std::vector<Corner> bucketed(corners.size());
+    std::vector<std::size_t> fill(cell_begin.begin(), cell_begin.end() - 1);
+    for (std::size_t i = 0; i < corners.size(); ++i) bucketed[fill[static_cast<std::size_t>(cell[i])]++] = corners[i];
+
+    std::vector<Corner> kept;
+    kept.reserve(corners.size());
+    const auto by_score = [](const Corner& a, const Corner& c) { return a.score > c.score; };
+    for (std::size_t c = 0; c + 1 < cell_begin.size(); ++c) {
+      const auto first = bucketed.begin() + static_cast<std::ptrdiff_t>(cell_begin[c]);
+      const auto last = bucketed.begin() + static_cast<std::ptrdiff_t>(cell_begin[c + 1]);
+      const auto keep = std::min<std::ptrdiff_t>(last - first, options.max_per_cell);
+      std::partial_sort(first, first + keep, last, by_score);
+      kept.insert(kept.end(), first, first + keep);
+    }
+    corners.swap(kept);
+  }
+
+  std::sort(corners.begin(), corners.end(),
+            [](const Corner& a, const Corner& c) { return a.y != c.y ? a.y < c.y : a.x < c.x; });
+  return corners;
+}
+
+}  // namespace facadeslam
