@@ -33,6 +33,8 @@ class ImagePyramid {
   // `image` is 8-bit grey or BGR (converted to grey); it must be at least
   // 8 * 2^(levels-1) pixels on each side so that the top level is usable.
   ImagePyramid(const cv::Mat& image, const PyramidOptions& options = {});
+  // Rebuilds a pyramid from stored levels (map loading); no detection runs.
+  explicit ImagePyramid(std::array<PyramidLevel, kPyramidLevels> levels) : levels_(std::move(levels)) {}
 
   const PyramidLevel& level(int l) const { return levels_.at(static_cast<std::size_t>(l)); }
   int levels() const { return kPyramidLevels; }

@@ -1,0 +1,291 @@
+#include "core/map/map_io.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <mutex>
+#include <shared_mutex>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/lie/manifolds.hpp"
+#include "core/map/binary_stream.hpp"
+#include "core/util/atomic_write.hpp"
+#include "core/util/error.hpp"
+
+namespace facadeslam {
+namespace {
+
+constexpr char kMagic[8] = {'F', 'S', 'L', 'A', 'M', 'M', 'A', 'P'};
+
+std::vector<double> camera_parameters(const Camera& camera) {
+  return camera.visit([](const auto& m) -> std::vector<double> {
+    using M = std::decay_t<decltype(m)>;
+    if constexpr (std::is_same_v<M, PinholeRadTan>)
+      return {m.fx, m.fy, m.cx, m.cy, m.k1, m.k2, m.p1, m.p2, m.k3};
+    else
+      return {m.fx, m.fy, m.cx, m.cy, m.w};
+  });
+}
+
+Camera make_camera(const std::string& model, int width, int height, const std::vector<double>& p,
+                   BinaryReader& in) {
+  if (model == "pinhole" && p.size() == 9)
+    return Camera(width, height, PinholeRadTan{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]});
+  if (model == "atan" && p.size() == 5) return Camera(width, height, AtanCamera{p[0], p[1], p[2], p[3], p[4]});
+  in.corrupt("unknown camera model '" + model + "' with " + std::to_string(p.size()) + " parameters");
+}
+
+void put_pose(BinaryWriter& out, const SE3d& T) {
+  double params[kSe3ParamSize];
+  se3_to_params(T, params);
+  for (double v : params) out.put(v);
+}
+
+SE3d get_pose(BinaryReader& in) {
+  double params[kSe3ParamSize];
+  for (double& v : params) v = in.get<double>("keyframe pose");
+  return se3_from_params(params);
+}
+
+void put_vec(BinaryWriter& out, const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) out.put(v[i]);
+}
+
+Eigen::Vector3d get_vec(BinaryReader& in, const char* what) {
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) v[i] = in.get<double>(what);
+  return v;
+}
+
+void put_pyramid(BinaryWriter& out, const ImagePyramid& pyramid) {
+  for (int l = 0; l < kPyramidLevels; ++l) {
+    const auto& level = pyramid.level(l);
+    out.put_mat(level.image);
+    out.put(static_cast<std::uint32_t>(level.corners.size()));
+    for (const auto& c : level.corners) {
+      out.put(static_cast<std::int32_t>(c.x));
+      out.put(static_cast<std::int32_t>(c.y));
+      out.put(c.score);
+    }
+  }
+}
+
+std::shared_ptr<const ImagePyramid> get_pyramid(BinaryReader& in) {
+  std::array<PyramidLevel, kPyramidLevels> levels;
+  for (auto& level : levels) {
+    level.image = in.get_mat("pyramid image");
+    if (level.image.type() != CV_8UC1) in.corrupt("pyramid level is not an 8-bit grey image");
+    const auto n = in.get<std::uint32_t>("corner count");
+    if (n > in.remaining() / 12) in.corrupt("corner count larger than the file");
+    level.corners.resize(n);
+    for (auto& c : level.corners) {
+      c.x = in.get<std::int32_t>("corner");
+      c.y = in.get<std::int32_t>("corner");
+      c.score = in.get<float>("corner");
+    }
+  }
+  return std::make_shared<const ImagePyramid>(std::move(levels));
+}
+
+// Colour images are stored PNG-compressed (lossless): raw they would dominate the file.
+void put_colour(BinaryWriter& out, const cv::Mat& colour) {
+  std::vector<std::uint8_t> png;
+  if (!colour.empty() && !cv::imencode(".png", colour, png, {cv::IMWRITE_PNG_COMPRESSION, 1}))
+    throw Error("map save: cannot encode a keyframe colour image");
+  out.put(static_cast<std::uint32_t>(png.size()));
+  out.put_bytes(png.data(), png.size());
+}
+
+cv::Mat get_colour(BinaryReader& in) {
+  const auto size = in.get<std::uint32_t>("colour image size");
+  if (size == 0) return {};
+  if (size > in.remaining()) in.corrupt("colour image larger than the file");
+  std::vector<std::uint8_t> png(size);
+  in.get_bytes(png.data(), size, "colour image");
+  cv::Mat colour = cv::imdecode(png, cv::IMREAD_UNCHANGED);
+  if (colour.empty()) in.corrupt("a keyframe colour image does not decode");
+  return colour;
+}
+
+}  // namespace
+
+std::string describe_camera(const Camera& camera) {
+  std::ostringstream s;
+  s << camera.model_name() << ' ' << camera.width() << 'x' << camera.height();
+  const auto p = camera_parameters(camera);
+  const char* names_pinhole[] = {"fx", "fy", "cx", "cy", "k1", "k2", "p1", "p2", "k3"};
+  const char* names_atan[] = {"fx", "fy", "cx", "cy", "w"};
+  for (std::size_t i = 0; i < p.size(); ++i)
+    s << ' ' << (p.size() == 9 ? names_pinhole[i] : names_atan[i]) << '=' << p[i];
+  return s.str();
+}
+
+bool same_camera(const Camera& a, const Camera& b) {
+  if (a.model_name() != b.model_name() || a.width() != b.width() || a.height() != b.height()) return false;
+  const auto pa = camera_parameters(a), pb = camera_parameters(b);
+  for (std::size_t i = 0; i < pa.size(); ++i)
+    if (std::abs(pa[i] - pb[i]) > 1e-9 * std::max(1.0, std::abs(pa[i]))) return false;
+  return true;
+}
+
+void save_map(const std::filesystem::path& path, const Map& map, const Camera& camera) {
+  BinaryWriter out;
+  out.put_bytes(kMagic, sizeof kMagic);
+  out.put(kMapFormatVersion);
+
+  out.put_string(camera.model_name());
+  out.put(static_cast<std::int32_t>(camera.width()));
+  out.put(static_cast<std::int32_t>(camera.height()));
+  const auto params = camera_parameters(camera);
+  out.put(static_cast<std::uint32_t>(params.size()));
+  for (double v : params) out.put(v);
+
+  out.put(static_cast<std::uint64_t>(map.next_keyframe_id_value()));
+  out.put(static_cast<std::uint64_t>(map.next_point_id_value()));
+
+  const auto keyframes = map.keyframes();
+  const auto points = map.points();
+  {
+    // Geometry under the lock so poses and positions are from one moment.
+    std::shared_lock lock(map.mutex());
+    out.put(static_cast<std::uint32_t>(keyframes.size()));
+    for (const auto& kf : keyframes) {
+      out.put(static_cast<std::uint64_t>(kf->id()));
+      out.put(kf->timestamp());
+      put_pose(out, kf->T_c_w());
+      out.put(kf->mean_depth());
+      out.put(kf->depth_sigma());
+      put_pyramid(out, *kf->pyramid());
+      put_colour(out, kf->colour());
+      out.put_mat(kf->small_blurred());
+      out.put(static_cast<std::uint32_t>(kf->measurements().size()));
+      for (const auto& [point_id, m] : kf->measurements()) {
+        out.put(static_cast<std::uint64_t>(point_id));
+        out.put(static_cast<std::int32_t>(m.level));
+        out.put(m.pixel.x());
+        out.put(m.pixel.y());
+        out.put(static_cast<std::uint8_t>(m.from_source));
+      }
+    }
+    out.put(static_cast<std::uint32_t>(points.size()));
+    for (const auto& p : points) {
+      out.put(static_cast<std::uint64_t>(p->id()));
+      out.put(static_cast<std::uint64_t>(p->source().keyframe_id));
+      out.put(static_cast<std::int32_t>(p->source().level));
+      out.put(p->source().pixel_level0.x());
+      out.put(p->source().pixel_level0.y());
+      const auto& g = p->geometry();
+      put_vec(out, g.p_w);
+      put_vec(out, g.right_w);
+      put_vec(out, g.down_w);
+      put_vec(out, g.normal_w);
+      const auto label = p->label();
+      out.put(label.label);
+      out.put(label.confidence);
+      out.put(static_cast<std::uint8_t>(p->is_bad()));
+    }
+  }
+  const std::uint64_t checksum = fnv1a64(out.buffer().data(), out.buffer().size());
+  out.put(checksum);
+  write_text_atomically(path, out.buffer());
+}
+
+Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expected_camera) {
+  if (map.keyframe_count() || map.point_count()) throw Error("load_map: the map to load into is not empty");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) fail_file(path, "cannot open the map file");
+  std::string data((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  BinaryReader in(data, path);
+
+  char magic[sizeof kMagic];
+  if (data.size() < sizeof kMagic + 4 + 8) fail_file(path, "not a facadeslam map file (too short)");
+  in.get_bytes(magic, sizeof magic, "magic");
+  if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) fail_file(path, "not a facadeslam map file (bad magic)");
+  const auto version = in.get<std::uint32_t>("format version");
+  if (version != kMapFormatVersion)
+    fail_file(path, "map format version " + std::to_string(version) + ", this build reads version " +
+                        std::to_string(kMapFormatVersion));
+  std::uint64_t stored_checksum = 0;
+  std::memcpy(&stored_checksum, data.data() + data.size() - 8, 8);
+  if (fnv1a64(data.data(), data.size() - 8) != stored_checksum)
+    fail_file(path, "corrupt map file (checksum mismatch; truncated or damaged)");
+
+  const std::string model = in.get_string("camera model");
+  const auto width = in.get<std::int32_t>("camera width");
+  const auto height = in.get<std::int32_t>("camera height");
+  const auto n_params = in.get<std::uint32_t>("camera parameters");
+  if (n_params > 16) in.corrupt("too many camera parameters");
+  std::vector<double> params(n_params);
+  for (double& v : params) v = in.get<double>("camera parameters");
+  Camera camera = make_camera(model, width, height, params, in);
+  if (expected_camera && !same_camera(camera, *expected_camera))
+    fail_file(path, "map was made with camera [" + describe_camera(camera) + "] but this run uses [" +
+                        describe_camera(*expected_camera) + "]");
+
+  const auto next_kf = in.get<std::uint64_t>("id counters");
+  const auto next_point = in.get<std::uint64_t>("id counters");
+
+  std::vector<std::shared_ptr<KeyFrame>> keyframes;
+  std::map<KeyFrame::Id, std::shared_ptr<const ImagePyramid>> pyramids;
+  const auto n_kf = in.get<std::uint32_t>("keyframe count");
+  for (std::uint32_t k = 0; k < n_kf; ++k) {
+    const auto id = in.get<std::uint64_t>("keyframe id");
+    const double timestamp = in.get<double>("keyframe timestamp");
+    const SE3d T_c_w = get_pose(in);
+    const double mean_depth = in.get<double>("depth stats");
+    const double depth_sigma = in.get<double>("depth stats");
+    auto pyramid = get_pyramid(in);
+    cv::Mat colour = get_colour(in);
+    cv::Mat small = in.get_mat("small blurred image");
+    auto kf = std::make_shared<KeyFrame>(id, timestamp, T_c_w, pyramid, colour, small);
+    kf->set_depth_stats(mean_depth, depth_sigma);
+    const auto n_meas = in.get<std::uint32_t>("measurement count");
+    if (n_meas > in.remaining() / 29) in.corrupt("measurement count larger than the file");
+    for (std::uint32_t i = 0; i < n_meas; ++i) {
+      const auto point_id = in.get<std::uint64_t>("measurement");
+      Measurement m;
+      m.level = in.get<std::int32_t>("measurement");
+      m.pixel.x() = in.get<double>("measurement");
+      m.pixel.y() = in.get<double>("measurement");
+      m.from_source = in.get<std::uint8_t>("measurement") != 0;
+      kf->measurements().emplace(point_id, m);
+    }
+    pyramids.emplace(id, pyramid);
+    keyframes.push_back(std::move(kf));
+  }
+
+  std::vector<std::shared_ptr<MapPoint>> points;
+  const auto n_points = in.get<std::uint32_t>("point count");
+  for (std::uint32_t i = 0; i < n_points; ++i) {
+    const auto id = in.get<std::uint64_t>("point id");
+    PatchSource source;
+    source.keyframe_id = in.get<std::uint64_t>("point source");
+    source.level = in.get<std::int32_t>("point source");
+    source.pixel_level0.x() = in.get<double>("point source");
+    source.pixel_level0.y() = in.get<double>("point source");
+    const auto it = pyramids.find(source.keyframe_id);
+    if (it == pyramids.end()) in.corrupt("point " + std::to_string(id) + " refers to a missing keyframe");
+    if (source.level < 0 || source.level >= kPyramidLevels) in.corrupt("point level out of range");
+    source.pyramid = it->second;
+    PointGeometry g;
+    g.p_w = get_vec(in, "point geometry");
+    g.right_w = get_vec(in, "point geometry");
+    g.down_w = get_vec(in, "point geometry");
+    g.normal_w = get_vec(in, "point geometry");
+    auto point = std::make_shared<MapPoint>(id, std::move(source), g);
+    SemanticLabel label;
+    label.label = in.get<std::uint8_t>("point label");
+    label.confidence = in.get<float>("point label");
+    point->set_label(label);
+    if (in.get<std::uint8_t>("point flags")) point->mark_bad();
+    points.push_back(std::move(point));
+  }
+  if (in.remaining() != 8) in.corrupt("unexpected data after the points");
+
+  map.add(keyframes, points);
+  map.restore_next_ids(next_kf, next_point);
+  return camera;
+}
+
+}  // namespace facadeslam

@@ -1,0 +1,32 @@
+#pragma once
+// Map save/load in a versioned little-endian binary format:
+//   magic "FSLAMMAP", u32 format version, camera (model, size, parameters),
+//   id counters, keyframes (pose, depth stats, pyramid levels with their
+//   corners, colour image, small blurred image, measurements), points
+//   (source, geometry, label, flags), and a trailing FNV-1a checksum.
+// Loading checks the magic, the version, the checksum and that the map was
+// made with the camera of the current run; each failure is an Error naming
+// the file and what was expected.
+//
+// Saving reads keyframe measurements, which only the map maker thread edits:
+// call it from that thread or while the map maker is idle.
+#include <filesystem>
+
+#include "core/camera/camera.hpp"
+#include "core/map/map.hpp"
+
+namespace facadeslam {
+
+inline constexpr std::uint32_t kMapFormatVersion = 1;
+
+void save_map(const std::filesystem::path& path, const Map& map, const Camera& camera);
+
+// Loads into `map` (which must be empty). With `expected_camera`, a map made
+// with another camera (model, size or parameters) is rejected.
+Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expected_camera = nullptr);
+
+// "pinhole 640x480 fx=500 fy=500 cx=319.5 cy=239.5 ..." for messages.
+std::string describe_camera(const Camera& camera);
+bool same_camera(const Camera& a, const Camera& b);
+
+}  // namespace facadeslam

@@ -1,0 +1,35 @@
+#include "core/map/map_point.hpp"
+
+#include <bit>
+
+namespace facadeslam {
+
+MapPoint::MapPoint(Id id, PatchSource source, const PointGeometry& geometry)
+    : id_(id), source_(std::move(source)), geometry_(geometry), packed_label_(kUnlabelled) {}
+
+// Label and confidence travel in one 64-bit atomic so a reader never sees a
+// label paired with another label's confidence.
+SemanticLabel MapPoint::label() const {
+  const std::uint64_t packed = packed_label_.load(std::memory_order_acquire);
+  return {static_cast<std::uint8_t>(packed & 0xff), std::bit_cast<float>(static_cast<std::uint32_t>(packed >> 8))};
+}
+
+void MapPoint::set_label(SemanticLabel label) {
+  const std::uint64_t packed =
+      (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(label.confidence)) << 8) | label.label;
+  packed_label_.store(packed, std::memory_order_release);
+}
+
+PointGeometry fronto_parallel_geometry(const Eigen::Matrix3d& R_w_c, const Eigen::Vector3d& centre_w,
+                                       const Eigen::Vector3d& ray_c, const Eigen::Vector3d& ray_right_c,
+                                       const Eigen::Vector3d& ray_down_c, double depth) {
+  PointGeometry g;
+  const Eigen::Vector3d p_c = ray_c * depth;
+  g.p_w = R_w_c * p_c + centre_w;
+  g.right_w = R_w_c * ((ray_right_c - ray_c) * depth);
+  g.down_w = R_w_c * ((ray_down_c - ray_c) * depth);
+  g.normal_w = (centre_w - g.p_w).normalized();
+  return g;
+}
+
+}  // namespace facadeslam

@@ -1,0 +1,97 @@
+#pragma once
+// A map point: a 3D position in the world frame plus the 8x8 image patch it
+// was created from (PTAM). The patch is not copied: it is re-read from the
+// source keyframe's pyramid level and warped into each new view by the affine
+// map that the point's local surface induces. For that the point keeps, in the
+// world frame, the offsets that one source-level pixel to the right and one
+// down correspond to at the point's depth (PTAM's v3PixelRight_W /
+// v3PixelDown_W, on a plane facing the source camera); they are refreshed
+// whenever bundle adjustment moves the point or its source keyframe.
+//
+// Threads: geometry is written by the map maker (creation, bundle adjustment)
+// and read by the tracker, both under the Map's lock (see map.hpp); the
+// semantic label is an atomic so the semantic worker never blocks the tracker.
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "core/image/image_pyramid.hpp"
+
+namespace facadeslam {
+
+// Class ids of the semantic labels; 255 = not labelled yet.
+inline constexpr std::uint8_t kUnlabelled = 255;
+
+struct SemanticLabel {
+  std::uint8_t label = kUnlabelled;
+  float confidence = 0.f;
+  bool operator==(const SemanticLabel&) const = default;
+};
+
+// Where a point's patch comes from; immutable once the point exists.
+struct PatchSource {
+  std::uint64_t keyframe_id = 0;
+  std::shared_ptr<const ImagePyramid> pyramid;  // the source keyframe's images
+  int level = 0;                                // pyramid level of the patch
+  Eigen::Vector2d pixel_level0{0, 0};           // patch centre, level-0 pixels
+};
+
+struct PointGeometry {
+  Eigen::Vector3d p_w{0, 0, 0};       // position
+  Eigen::Vector3d right_w{0, 0, 0};   // world offset of one source-level pixel to the right
+  Eigen::Vector3d down_w{0, 0, 0};    // ... and one pixel down
+  Eigen::Vector3d normal_w{0, 0, 1};  // unit vector from the point towards its source camera
+};
+
+class MapPoint {
+ public:
+  using Id = std::uint64_t;
+
+  MapPoint(Id id, PatchSource source, const PointGeometry& geometry);
+
+  Id id() const { return id_; }
+  const PatchSource& source() const { return source_; }
+
+  // Guarded by Map::mutex(): shared lock to read, exclusive lock to write.
+  const PointGeometry& geometry() const { return geometry_; }
+  const Eigen::Vector3d& position() const { return geometry_.p_w; }
+  void set_geometry(const PointGeometry& geometry) { geometry_ = geometry; }
+
+  // Lock-free; written by the semantic worker, read by the tracker and outputs.
+  SemanticLabel label() const;
+  void set_label(SemanticLabel label);
+
+  // Marked bad by the map maker; the tracker skips bad points and the map
+  // maker removes them at its next maintenance pass.
+  bool is_bad() const { return bad_.load(std::memory_order_acquire); }
+  void mark_bad() { bad_.store(true, std::memory_order_release); }
+
+  // Tracker statistics for outlier removal (PTAM: a point searched for often
+  // and rarely found is discarded). Relaxed atomics: counts, not ordering.
+  void count_search(bool found) {
+    searched_.fetch_add(1, std::memory_order_relaxed);
+    if (found) found_.fetch_add(1, std::memory_order_relaxed);
+  }
+  std::uint32_t times_searched() const { return searched_.load(std::memory_order_relaxed); }
+  std::uint32_t times_found() const { return found_.load(std::memory_order_relaxed); }
+
+ private:
+  const Id id_;
+  const PatchSource source_;
+  PointGeometry geometry_;
+  std::atomic<std::uint64_t> packed_label_;  // label in the low byte, confidence bits above
+  std::atomic<bool> bad_{false};
+  std::atomic<std::uint32_t> searched_{0}, found_{0};
+};
+
+// Builds the geometry of a point seen at `pixel_level0` at `level` of a camera
+// with pose T_c_w (given as rotation R_w_c and centre), at depth `depth` along
+// the ray `ray_c` (z = 1 plane), for a patch facing the camera: the pixel
+// offsets are the ray offsets of one level-pixel scaled by the depth.
+PointGeometry fronto_parallel_geometry(const Eigen::Matrix3d& R_w_c, const Eigen::Vector3d& centre_w,
+                                       const Eigen::Vector3d& ray_c, const Eigen::Vector3d& ray_right_c,
+                                       const Eigen::Vector3d& ray_down_c, double depth);
+
+}  // namespace facadeslam

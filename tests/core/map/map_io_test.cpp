@@ -1,0 +1,166 @@
+#include "core/map/map_io.hpp"
+
+#include <fstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/util/error.hpp"
+#include "tests/core/map/map_test_fixtures.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace facadeslam {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_file(const std::filesystem::path& p, const std::string& data) {
+  std::ofstream(p, std::ios::binary) << data;
+}
+
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected facadeslam::Error";
+  return {};
+}
+
+bool mats_equal(const cv::Mat& a, const cv::Mat& b) {
+  if (a.type() != b.type() || a.size() != b.size()) return false;
+  if (a.empty()) return true;
+  cv::Mat diff;
+  cv::absdiff(a, b, diff);
+  return cv::countNonZero(diff.reshape(1)) == 0;
+}
+
+void expect_identical(const Map& a, const Map& b) {
+  const auto ka = a.keyframes(), kb = b.keyframes();
+  ASSERT_EQ(ka.size(), kb.size());
+  for (std::size_t i = 0; i < ka.size(); ++i) {
+    EXPECT_EQ(ka[i]->id(), kb[i]->id());
+    EXPECT_EQ(ka[i]->timestamp(), kb[i]->timestamp());
+    EXPECT_EQ(ka[i]->T_c_w().matrix(), kb[i]->T_c_w().matrix());
+    EXPECT_EQ(ka[i]->mean_depth(), kb[i]->mean_depth());
+    EXPECT_TRUE(mats_equal(ka[i]->colour(), kb[i]->colour()));
+    EXPECT_TRUE(mats_equal(ka[i]->small_blurred(), kb[i]->small_blurred()));
+    for (int l = 0; l < kPyramidLevels; ++l) {
+      EXPECT_TRUE(mats_equal(ka[i]->pyramid()->level(l).image, kb[i]->pyramid()->level(l).image));
+      const auto& ca = ka[i]->pyramid()->level(l).corners;
+      const auto& cb = kb[i]->pyramid()->level(l).corners;
+      ASSERT_EQ(ca.size(), cb.size());
+      for (std::size_t c = 0; c < ca.size(); ++c) {
+        EXPECT_EQ(ca[c].x, cb[c].x);
+        EXPECT_EQ(ca[c].score, cb[c].score);
+      }
+    }
+    ASSERT_EQ(ka[i]->measurements().size(), kb[i]->measurements().size());
+    for (const auto& [id, m] : ka[i]->measurements()) {
+      const auto& n = kb[i]->measurements().at(id);
+      EXPECT_EQ(m.level, n.level);
+      EXPECT_EQ(m.pixel, n.pixel);
+      EXPECT_EQ(m.from_source, n.from_source);
+    }
+  }
+  const auto pa = a.points(), pb = b.points();
+  ASSERT_EQ(pa.size(), pb.size());
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    EXPECT_EQ(pa[i]->id(), pb[i]->id());
+    EXPECT_EQ(pa[i]->geometry().p_w, pb[i]->geometry().p_w);
+    EXPECT_EQ(pa[i]->geometry().right_w, pb[i]->geometry().right_w);
+    EXPECT_EQ(pa[i]->geometry().normal_w, pb[i]->geometry().normal_w);
+    EXPECT_EQ(pa[i]->source().keyframe_id, pb[i]->source().keyframe_id);
+    EXPECT_EQ(pa[i]->source().level, pb[i]->source().level);
+    EXPECT_EQ(pa[i]->source().pixel_level0, pb[i]->source().pixel_level0);
+    EXPECT_EQ(pa[i]->label(), pb[i]->label());
+    EXPECT_EQ(pa[i]->is_bad(), pb[i]->is_bad());
+  }
+  EXPECT_EQ(a.next_point_id_value(), b.next_point_id_value());
+  EXPECT_EQ(a.next_keyframe_id_value(), b.next_keyframe_id_value());
+}
+
+class MapIo : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    test::build_test_map(map, 25);
+    map.points()[4]->mark_bad();
+    save_map(file, map, camera);
+  }
+  test::TempDir dir;
+  std::filesystem::path file = dir / "map.fslmap";
+  Camera camera = test::small_test_camera();
+  Map map;
+};
+
+TEST_F(MapIo, RoundTripGivesAnIdenticalMap) {
+  Map loaded;
+  const Camera c = load_map(file, loaded, &camera);
+  EXPECT_TRUE(same_camera(c, camera));
+  expect_identical(map, loaded);
+  // Points share their source keyframe's pyramid, as in the original.
+  EXPECT_EQ(loaded.points()[0]->source().pyramid, loaded.keyframe(0)->pyramid());
+}
+
+TEST_F(MapIo, SavingTwiceGivesTheSameBytes) {
+  save_map(dir / "again.fslmap", map, camera);
+  EXPECT_EQ(read_file(file), read_file(dir / "again.fslmap"));
+}
+
+TEST_F(MapIo, TruncatedFileIsRejected) {
+  const std::string data = read_file(file);
+  write_file(dir / "cut.fslmap", data.substr(0, data.size() / 2));
+  Map loaded;
+  EXPECT_THAT(error_of([&] { load_map(dir / "cut.fslmap", loaded); }),
+              AllOf(HasSubstr("cut.fslmap"), HasSubstr("corrupt")));
+  EXPECT_EQ(loaded.point_count(), 0u) << "nothing half-loaded";
+}
+
+TEST_F(MapIo, FlippedByteIsRejected) {
+  std::string data = read_file(file);
+  data[data.size() / 3] ^= 0x40;
+  write_file(dir / "flip.fslmap", data);
+  Map loaded;
+  EXPECT_THAT(error_of([&] { load_map(dir / "flip.fslmap", loaded); }), HasSubstr("checksum"));
+}
+
+TEST_F(MapIo, WrongVersionIsRejected) {
+  std::string data = read_file(file);
+  data[8] = 99;  // the u32 after the 8-byte magic
+  write_file(dir / "v99.fslmap", data);
+  Map loaded;
+  EXPECT_THAT(error_of([&] { load_map(dir / "v99.fslmap", loaded); }),
+              AllOf(HasSubstr("v99.fslmap"), HasSubstr("version 99"), HasSubstr("reads version 1")));
+}
+
+TEST_F(MapIo, NotAMapFile) {
+  write_file(dir / "text.fslmap", "hello, this is not a map at all");
+  Map loaded;
+  EXPECT_THAT(error_of([&] { load_map(dir / "text.fslmap", loaded); }), HasSubstr("not a facadeslam map"));
+  EXPECT_THAT(error_of([&] { load_map(dir / "absent.fslmap", loaded); }),
+              AllOf(HasSubstr("absent.fslmap"), HasSubstr("cannot open")));
+}
+
+TEST_F(MapIo, MapFromAnotherCameraIsRejected) {
+  const Camera other(160, 120, PinholeRadTan{180, 180, 79.5, 59.5, 0, 0, 0, 0, 0});
+  Map loaded;
+  EXPECT_THAT(error_of([&] { load_map(file, loaded, &other); }),
+              AllOf(HasSubstr("map.fslmap"), HasSubstr("fx=150"), HasSubstr("fx=180")));
+  const Camera bigger(320, 240, PinholeRadTan{150, 150, 79.5, 59.5, 0.01, 0, 0, 0, 0});
+  EXPECT_THAT(error_of([&] { load_map(file, loaded, &bigger); }), HasSubstr("320x240"));
+}
+
+TEST_F(MapIo, LoadingIntoANonEmptyMapIsRefused) {
+  EXPECT_THROW(load_map(file, map), Error);
+}
+
+}  // namespace
+}  // namespace facadeslam

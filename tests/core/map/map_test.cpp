@@ -1,0 +1,122 @@
+#include "core/map/map.hpp"
+
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "tests/core/map/map_test_fixtures.hpp"
+
+namespace facadeslam {
+namespace {
+
+TEST(MapPoint, LabelRoundTripsThroughTheAtomic) {
+  Map map;
+  test::build_test_map(map, 1);
+  auto p = map.points().front();
+  p->set_label({7, 0.875f});
+  EXPECT_EQ(p->label(), (SemanticLabel{7, 0.875f}));
+  p->set_label({kUnlabelled, 0.f});
+  EXPECT_EQ(p->label().label, kUnlabelled);
+}
+
+TEST(MapPoint, NewPointsAreUnlabelled) {
+  MapPoint p(0, {}, {});
+  EXPECT_EQ(p.label().label, kUnlabelled);
+  EXPECT_FALSE(p.is_bad());
+}
+
+TEST(MapPoint, SearchStatistics) {
+  MapPoint p(0, {}, {});
+  p.count_search(true);
+  p.count_search(false);
+  p.count_search(false);
+  EXPECT_EQ(p.times_searched(), 3u);
+  EXPECT_EQ(p.times_found(), 1u);
+}
+
+TEST(MapPoint, FrontoParallelGeometryScalesPixelOffsetsWithDepth) {
+  const Eigen::Matrix3d R_w_c = Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d centre(1, 2, 3);
+  const PointGeometry g = fronto_parallel_geometry(R_w_c, centre, {0.1, 0, 1}, {0.11, 0, 1}, {0.1, 0.01, 1}, 5.0);
+  EXPECT_TRUE(g.p_w.isApprox(Eigen::Vector3d(1.5, 2, 8)));
+  EXPECT_TRUE(g.right_w.isApprox(Eigen::Vector3d(0.05, 0, 0)));
+  EXPECT_TRUE(g.down_w.isApprox(Eigen::Vector3d(0, 0.05, 0)));
+  EXPECT_NEAR(g.normal_w.norm(), 1.0, 1e-12);
+  EXPECT_LT(g.normal_w.z(), 0);  // points back towards the camera
+}
+
+TEST(Map, IdsAreUniqueAndLookupsWork) {
+  Map map;
+  test::build_test_map(map, 5);
+  EXPECT_EQ(map.keyframe_count(), 2u);
+  EXPECT_EQ(map.point_count(), 5u);
+  for (const auto& p : map.points()) EXPECT_EQ(map.point(p->id()), p);
+  EXPECT_EQ(map.point(999), nullptr);
+  EXPECT_EQ(map.keyframe(1)->id(), 1u);
+  EXPECT_NE(map.new_point_id(), map.new_point_id());
+}
+
+TEST(Map, BadPointsLeaveSnapshotsAndAreRemoved) {
+  Map map;
+  test::build_test_map(map, 6);
+  const auto v0 = map.version();
+  map.points()[2]->mark_bad();
+  EXPECT_EQ(map.snapshot_points().size(), 5u);
+  const auto removed = map.remove_bad_points();
+  ASSERT_EQ(removed.size(), 1u);
+  EXPECT_EQ(map.point_count(), 5u);
+  EXPECT_EQ(map.point(removed[0]), nullptr);
+  EXPECT_GT(map.version(), v0);
+}
+
+TEST(Map, SnapshotCopiesGeometry) {
+  Map map;
+  test::build_test_map(map, 3);
+  const auto snapshot = map.snapshot_points();
+  ASSERT_EQ(snapshot.size(), 3u);
+  for (const auto& s : snapshot) EXPECT_EQ(s.geometry.p_w, s.point->position());
+}
+
+TEST(Map, ConcurrentReadersAndWriterSeeWholeObjects) {
+  // Run under ThreadSanitizer: a writer publishing points and moving them
+  // under the lock while readers snapshot and relabel.
+  Map map;
+  test::build_test_map(map, 10);
+  std::atomic<bool> stop{false};
+  std::thread writer([&] {
+    for (int i = 0; i < 200; ++i) {
+      auto source = map.points().front()->source();
+      map.add_point(std::make_shared<MapPoint>(map.new_point_id(), source, PointGeometry{}));
+      const auto points = map.points();
+      std::unique_lock lock(map.mutex());
+      for (const auto& p : points) {
+        PointGeometry g = p->geometry();
+        g.p_w.x() += 1e-3;
+        p->set_geometry(g);
+      }
+      map.bump_version_locked();
+    }
+    stop = true;
+  });
+  std::size_t snapshots = 0;
+  while (!stop) {
+    const auto snapshot = map.snapshot_points();
+    for (const auto& s : snapshot) s.point->set_label({1, 0.5f});
+    EXPECT_GE(snapshot.size(), 10u);
+    ++snapshots;
+  }
+  writer.join();
+  EXPECT_EQ(map.point_count(), 210u);
+  EXPECT_GT(snapshots, 0u);
+}
+
+TEST(Map, ClearEmptiesEverything) {
+  Map map;
+  test::build_test_map(map, 4);
+  map.clear();
+  EXPECT_EQ(map.keyframe_count(), 0u);
+  EXPECT_EQ(map.point_count(), 0u);
+}
+
+}  // namespace
+}  // namespace facadeslam
