@@ -1,3 +1,4 @@
+#include "apps/cmd_evaluate_trajectory.hpp"
 #include "apps/commands.hpp"
 
 namespace facadeslam::apps {
@@ -5,6 +6,7 @@ namespace facadeslam::apps {
 void add_evaluate_command(CLI::App& app) {
   auto* evaluate = app.add_subcommand("evaluate", "Evaluate trajectories and labels against ground truth");
   evaluate->require_subcommand(1);
+  add_evaluate_trajectory_command(*evaluate);
 }
 
 }  // namespace facadeslam::apps

@@ -1,0 +1,134 @@
+#include "apps/cmd_evaluate_trajectory.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+#include "core/plot/line_plot.hpp"
+#include "core/trajectory/metrics.hpp"
+#include "core/trajectory/trajectory_io.hpp"
+#include "core/util/json.hpp"
+
+namespace facadeslam::apps {
+namespace {
+
+struct Options {
+  std::filesystem::path gt, est, gt_times, est_times, json, plot;
+  std::string align = "sim3";
+  std::string format = "auto";
+  double max_dt = kDefaultMaxTimeDifference;
+  int rpe_delta = 1;
+};
+
+void print_table(const Options& o, const TrajectoryEvaluation& e) {
+  std::printf("trajectory evaluation: %s vs %s\n", o.est.string().c_str(), o.gt.string().c_str());
+  std::printf("  %-22s %zu (|dt| <= %g s)\n", "pairs", e.pairs, o.max_dt);
+  std::printf("  %-22s %s\n", "alignment", o.align.c_str());
+  std::printf("  %-22s %.6f\n", "scale", e.scale);
+  std::printf("  %-22s %.6f m  (%.3f %% of the path)\n", "ATE RMSE", e.ate_rmse_m, e.ate_percent_of_path);
+  std::printf("  %-22s %.6f m\n", "ATE mean", e.ate_mean_m);
+  std::printf("  %-22s %.6f m\n", "ATE median", e.ate_median_m);
+  std::printf("  %-22s %.6f m\n", "ATE max", e.ate_max_m);
+  std::printf("  %-22s %.6f m  (poses %d apart)\n", "RPE translation RMSE", e.rpe_trans_rmse_m, o.rpe_delta);
+  std::printf("  %-22s %.6f deg\n", "RPE rotation RMSE", e.rpe_rot_rmse_deg);
+  std::printf("  %-22s %.6f m\n", "path length (gt)", e.path_length_m);
+  std::fflush(stdout);
+}
+
+// Top view: the x-z plane, which is the ground plane when y points down as in
+// camera-style world frames (KITTI, a SLAM map started from a camera).
+// The ground truth is drawn in full over the time the estimate covers (not
+// only at the associated poses), so that sparse keyframe estimates are seen
+// against the real path.
+void save_top_view(const Options& o, const Trajectory& gt, const TrajectoryEvaluation& e) {
+  plot::LinePlot figure;
+  char title[160];
+  std::snprintf(title, sizeof title, "Top view, %s alignment: ATE RMSE %.4f m over %zu poses", o.align.c_str(),
+                e.ate_rmse_m, e.pairs);
+  figure.set_title(title);
+  figure.set_x_label("x [m]");
+  figure.set_y_label("z [m]");
+  figure.set_equal_axes(true);
+
+  std::vector<double> gt_x, gt_z, est_x, est_z;
+  const double first = e.timestamps.front() - o.max_dt, last = e.timestamps.back() + o.max_dt;
+  for (const auto& pose : gt)
+    if (pose.timestamp >= first && pose.timestamp <= last) {
+      gt_x.push_back(pose.T_w_c.translation().x());
+      gt_z.push_back(pose.T_w_c.translation().z());
+    }
+  for (const auto& p : e.aligned_est_positions) {
+    est_x.push_back(p.x());
+    est_z.push_back(p.z());
+  }
+  plot::SeriesStyle gt_style;
+  gt_style.colour = cv::Scalar(70, 70, 70);
+  figure.add_series("ground truth", gt_x, gt_z, gt_style);
+  plot::SeriesStyle est_style;
+  est_style.markers = e.pairs <= 300;  // keyframe trajectories: show each pose
+  est_style.colour = plot::series_colour(0);
+  est_style.thickness = 1;  // the ground truth stays visible underneath
+  figure.add_series("estimate (aligned)", est_x, est_z, est_style);
+  figure.save_png(o.plot);
+}
+
+void run(const Options& o) {
+  const TrajectoryFormat format = parse_trajectory_format(o.format);
+  EvaluationOptions options;
+  options.alignment = parse_alignment_mode(o.align);
+  options.max_dt = o.max_dt;
+  options.rpe_delta = static_cast<std::size_t>(o.rpe_delta);
+
+  const Trajectory gt = read_trajectory(o.gt, format, o.gt_times);
+  const Trajectory est = read_trajectory(o.est, format, o.est_times);
+  spdlog::debug("read {} ground-truth and {} estimated poses", gt.size(), est.size());
+  const TrajectoryEvaluation e = evaluate_trajectory(gt, est, options);
+  print_table(o, e);
+
+  if (!o.json.empty()) {
+    Json report = to_json(e);
+    report["alignment"] = o.align;
+    report["max_dt"] = o.max_dt;
+    report["rpe_delta"] = o.rpe_delta;
+    report["gt"] = o.gt.string();
+    report["est"] = o.est.string();
+    write_json(o.json, report);
+    spdlog::info("wrote {}", o.json.string());
+  }
+  if (!o.plot.empty()) {
+    save_top_view(o, gt, e);
+    spdlog::info("wrote {}", o.plot.string());
+  }
+}
+
+}  // namespace
+
+void add_evaluate_trajectory_command(CLI::App& evaluate) {
+  auto options = std::make_shared<Options>();
+  auto* cmd = evaluate.add_subcommand(
+      "trajectory", "ATE and RPE of an estimated trajectory against ground truth (TUM or KITTI files)");
+  cmd->add_option("--gt", options->gt, "Ground-truth trajectory file")->required();
+  cmd->add_option("--est", options->est, "Estimated trajectory file")->required();
+  cmd->add_option("--align", options->align, "Alignment before measuring: sim3 (monocular) or se3")
+      ->check(CLI::IsMember({"sim3", "se3"}))
+      ->capture_default_str();
+  cmd->add_option("--format", options->format, "File format of both files: auto (by column count), tum or kitti")
+      ->check(CLI::IsMember({"auto", "tum", "kitti"}))
+      ->capture_default_str();
+  cmd->add_option("--gt-times", options->gt_times, "Timestamps of a KITTI ground truth, one per line");
+  cmd->add_option("--est-times", options->est_times, "Timestamps of a KITTI estimate, one per line");
+  cmd->add_option("--max-dt", options->max_dt, "Largest time difference of an associated pose pair, seconds")
+      ->check(CLI::Range(0.0, 3600.0))
+      ->capture_default_str();
+  cmd->add_option("--rpe-delta", options->rpe_delta, "RPE over pose pairs this many associated poses apart")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  cmd->add_option("--json", options->json, "Write the figures to this JSON file");
+  cmd->add_option("--plot", options->plot, "Write a top view (x-z plane) of both trajectories to this PNG");
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace facadeslam::apps
