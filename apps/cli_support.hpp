@@ -10,6 +10,7 @@ namespace facadeslam::apps {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitError = 1;       // bad input, failed run
 inline constexpr int kExitUsage = 2;       // bad command line
+inline constexpr int kExitNotInitialised = 3;  // replay ran, but the map never initialised
 
 // A file that must exist and be a regular file.
 void require_file(const std::filesystem::path& path, const std::string& what);

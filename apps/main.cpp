@@ -24,7 +24,10 @@ int main(int argc, char** argv) {
     configure_logging(quiet ? Verbosity::quiet : verbose ? Verbosity::verbose : Verbosity::normal);
   });
 
+  apps::add_replay_command(app);
   apps::add_evaluate_command(app);
+  apps::add_calibrate_command(app);
+  apps::add_synth_command(app);
 
   try {
     app.parse(argc, argv);
@@ -32,6 +35,10 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::RuntimeError& e) {
+    // A subcommand finished with a documented non-zero status (it has
+    // already said why).
+    return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::fprintf(stderr, "facadeslam: %s (see --help)\n", e.what());

@@ -51,12 +51,20 @@ std::vector<PointSnapshot> Map::snapshot_points() const {
 
 std::shared_ptr<KeyFrame> Map::keyframe(KeyFrame::Id id) const {
   std::shared_lock lock(mutex_);
-  const auto it = keyframes_.find(id);
-  return it == keyframes_.end() ? nullptr : it->second;
+  return keyframe_locked(id);
 }
 
 std::shared_ptr<MapPoint> Map::point(MapPoint::Id id) const {
   std::shared_lock lock(mutex_);
+  return point_locked(id);
+}
+
+std::shared_ptr<KeyFrame> Map::keyframe_locked(KeyFrame::Id id) const {
+  const auto it = keyframes_.find(id);
+  return it == keyframes_.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<MapPoint> Map::point_locked(MapPoint::Id id) const {
   const auto it = points_.find(id);
   return it == points_.end() ? nullptr : it->second;
 }

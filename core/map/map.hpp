@@ -54,6 +54,10 @@ class Map {
   std::shared_ptr<KeyFrame> keyframe(KeyFrame::Id id) const;
   std::shared_ptr<MapPoint> point(MapPoint::Id id) const;
 
+  // Lookups for a caller that already holds the lock (shared or exclusive).
+  std::shared_ptr<KeyFrame> keyframe_locked(KeyFrame::Id id) const;
+  std::shared_ptr<MapPoint> point_locked(MapPoint::Id id) const;
+
   std::size_t keyframe_count() const;
   std::size_t point_count() const;
 

@@ -1,0 +1,84 @@
+#include "core/map/point_cloud_writer.hpp"
+
+#include <cstring>
+#include <map>
+#include <shared_mutex>
+#include <sstream>
+
+#include "core/map/semantic_classes.hpp"
+#include "core/util/atomic_write.hpp"
+#include "core/util/json.hpp"
+
+namespace facadeslam {
+namespace {
+
+template <class T>
+void append(std::string& out, T value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+}  // namespace
+
+std::size_t write_labelled_point_cloud(const std::filesystem::path& ply_path, const Map& map) {
+  struct Vertex {
+    Eigen::Vector3f p;
+    SemanticLabel label;
+  };
+  std::vector<Vertex> vertices;
+  {
+    const auto points = map.points();
+    std::shared_lock lock(map.mutex());
+    for (const auto& p : points)
+      if (!p->is_bad()) vertices.push_back({p->position().cast<float>(), p->label()});
+  }
+
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\ncomment facadeslam labelled map points\n";
+  for (const auto& c : kSemanticClasses)
+    header << "comment class " << int(c.id) << ' ' << c.name << ' ' << int(c.r) << ' ' << int(c.g) << ' '
+           << int(c.b) << '\n';
+  header << "comment class " << int(kUnlabelledClass.id) << ' ' << kUnlabelledClass.name << ' '
+         << int(kUnlabelledClass.r) << ' ' << int(kUnlabelledClass.g) << ' ' << int(kUnlabelledClass.b) << '\n';
+  header << "element vertex " << vertices.size() << '\n'
+         << "property float x\nproperty float y\nproperty float z\n"
+         << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+         << "property uchar label\nproperty float confidence\nend_header\n";
+
+  std::string data = header.str();
+  std::map<std::uint8_t, std::size_t> counts;
+  for (const auto& v : vertices) {
+    const SemanticClass& c = semantic_class(v.label.label);
+    for (int i = 0; i < 3; ++i) append(data, v.p[i]);
+    append(data, c.r);
+    append(data, c.g);
+    append(data, c.b);
+    append(data, v.label.label);
+    append(data, v.label.confidence);
+    ++counts[c.id];
+  }
+  write_text_atomically(ply_path, data);
+
+  Json classes = Json::array();
+  auto add_class = [&](const SemanticClass& c) {
+    Json entry = Json::object();
+    entry["id"] = static_cast<int>(c.id);
+    entry["name"] = std::string(c.name);
+    entry["colour_rgb"] = Json::Array{int(c.r), int(c.g), int(c.b)};
+    entry["points"] = counts.count(c.id) ? counts[c.id] : std::size_t{0};
+    classes.push_back(entry);
+  };
+  for (const auto& c : kSemanticClasses) add_class(c);
+  add_class(kUnlabelledClass);
+  Json sidecar = Json::object();
+  sidecar["point_cloud"] = ply_path.filename().string();
+  sidecar["points"] = vertices.size();
+  sidecar["classes"] = classes;
+  std::filesystem::path json_path = ply_path;
+  json_path.replace_extension(".classes.json");
+  write_json(json_path, sidecar);
+  return vertices.size();
+}
+
+}  // namespace facadeslam

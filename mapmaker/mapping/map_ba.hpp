@@ -1,0 +1,29 @@
+#pragma once
+// Bundle adjustment of the shared Map: copies the keyframes and points taking
+// part into a BaProblem under the map's shared lock, solves without any lock
+// (the tracker keeps running), then writes poses and positions back under an
+// exclusive lock held only for the copy. Outlier measurements (except a point's
+// source measurement) are dropped from their keyframes.
+//
+// Map maker thread only (it owns keyframe measurements).
+#include <optional>
+
+#include "core/camera/camera.hpp"
+#include "core/map/map.hpp"
+#include "mapmaker/ba/ba_selection.hpp"
+#include "mapmaker/ba/bundle_adjuster.hpp"
+
+namespace facadeslam {
+
+struct MapBaReport {
+  BaResult ba;
+  std::size_t keyframes = 0, points = 0, observations = 0;
+  std::size_t outliers_removed = 0;
+};
+
+// Local BA around `newest` (with `selection` neighbours) when given,
+// otherwise a global BA (first keyframe fixed, scale anchored on the second).
+MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adjuster,
+                       std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection = {});
+
+}  // namespace facadeslam

@@ -1,0 +1,66 @@
+#pragma once
+// Helpers for the hot loops: the per-patch kernels of extraction and the
+// per-pixel passes of preprocessing.
+//
+// Row width: kernels read patch rows in blocks of kLanes floats, rounding the
+// patch width 2r+1 up (lane_width), so that their inner loops have a fixed
+// trip count the compiler turns into straight vector code. The extra columns
+// are real pixels of the plane or its zeroed slack (padded_plane.hpp,
+// PatchView::kReadSlack); kernels ignore their results.
+//
+// The helpers below are always inlined, so that the code they expand to is
+// compiled for the target of the kernel that uses them.
+//
+// FACADESLAM_KERNEL: on x86-64 with GCC, the function is also compiled
+// for AVX2 (x86-64-v3) and the faster version is chosen when the program
+// loads; elsewhere it is an ordinary function. Both versions compute the
+// same formulas; float rounding may differ in the last bits between CPUs.
+#include <cstring>
+
+#include "semantics/descriptor/fast_math.hpp"
+
+namespace facadeslam::semantics {
+
+inline constexpr int kLanes = 8;
+
+// 2r+1 rounded up to a multiple of kLanes (8, 16 or 24 for r <= 10).
+constexpr int lane_width(int size) { return (size + kLanes - 1) / kLanes * kLanes; }
+
+// kLanes floats as one vector (GCC/Clang vector extension: 2 SSE registers
+// by default, one AVX register in the x86-64-v3 clone). Helpers take and
+// return vectors by reference: passing them by value would depend on the
+// target's ABI.
+using FloatLanes = float __attribute__((vector_size(kLanes * sizeof(float))));
+using IntLanes = int __attribute__((vector_size(kLanes * sizeof(int))));
+
+[[gnu::always_inline]] inline void load_lanes(FloatLanes& v, const float* p) { std::memcpy(&v, p, sizeof v); }
+[[gnu::always_inline]] inline void store_lanes(float* p, const FloatLanes& v) { std::memcpy(p, &v, sizeof v); }
+// Sum of the lanes by halving (3 shuffle-adds instead of 7 dependent adds).
+[[gnu::always_inline]] inline float lane_sum(const FloatLanes& v) {
+  using Four = float __attribute__((vector_size(4 * sizeof(float))));
+  Four low, high;
+  std::memcpy(&low, &v, sizeof low);
+  std::memcpy(&high, reinterpret_cast<const char*>(&v) + sizeof low, sizeof high);
+  const Four four = low + high;
+  const Four two = four + __builtin_shufflevector(four, four, 2, 3, 0, 1);
+  const Four one = two + __builtin_shufflevector(two, two, 1, 0, 3, 2);
+  return one[0];
+}
+// Zeroes the lanes whose index first + j is not below `size`.
+[[gnu::always_inline]] inline void keep_below(FloatLanes& v, int first, int size) {
+  const IntLanes lane = {0, 1, 2, 3, 4, 5, 6, 7};
+  const IntLanes keep = (lane + first) < size;  // all bits set where true
+  IntLanes bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  bits &= keep;
+  std::memcpy(&v, &bits, sizeof v);
+}
+static_assert(kLanes == 8, "keep_below lists the lane indices");
+
+}  // namespace facadeslam::semantics
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(FACADESLAM_NO_KERNEL_CLONES)
+#define FACADESLAM_KERNEL __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define FACADESLAM_KERNEL
+#endif

@@ -1,0 +1,12 @@
+#include "semantics/descriptor/modules/gevers_c_module.hpp"
+
+#include "semantics/descriptor/modules/plane_statistics.hpp"
+
+namespace facadeslam::semantics {
+
+void gevers_c_module(const ModuleContext& context, std::uint64_t bits, float* values) {
+  static constexpr PlaneId kPlanes[3] = {PlaneId::gevers_c1, PlaneId::gevers_c2, PlaneId::gevers_c3};
+  mean_std_values(context, kPlanes, 3, bits, values);
+}
+
+}  // namespace facadeslam::semantics

@@ -1,0 +1,140 @@
+#include "semantics/descriptor/modules/patch_moments.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include <opencv2/core.hpp>
+
+#include "semantics/descriptor/kernel_support.hpp"
+
+namespace facadeslam::semantics {
+namespace {
+
+constexpr double kBinomial[6][6] = {{1, 0, 0, 0, 0, 0}, {1, 1, 0, 0, 0, 0}, {1, 2, 1, 0, 0, 0},
+                                    {1, 3, 3, 1, 0, 0}, {1, 4, 6, 4, 1, 0}, {1, 5, 10, 10, 5, 1}};
+constexpr int kMaxOrder = kMaxMomentOrder;
+
+// column[q][x] = sum over rows y of y^q I(x, y), y from the centre row.
+// Rows y and -y are folded first: even powers weight their sum, odd powers
+// their difference, which halves the multiply-adds. Order and width are
+// template parameters so that every loop has a fixed trip count.
+template <int Order, int W>
+[[gnu::always_inline]] inline void column_sums(const PatchView& patch, FloatLanes (*column)[W / kLanes]) {
+  constexpr int kBlocks = W / kLanes;
+  const int r = patch.radius;
+  const float* centre = patch.row(r);
+  for (int b = 0; b < kBlocks; ++b) {
+    load_lanes(column[0][b], centre + b * kLanes);
+    for (int q = 1; q <= Order; ++q) column[q][b] = FloatLanes{};
+  }
+  for (int d = 1; d <= r; ++d) {
+    const float* up = patch.row(r - d);    // y = -d
+    const float* down = patch.row(r + d);  // y = +d
+    float weights[Order + 1];
+    weights[0] = 1.0f;
+    for (int q = 1; q <= Order; ++q) weights[q] = weights[q - 1] * static_cast<float>(d);
+    for (int b = 0; b < kBlocks; ++b) {
+      FloatLanes lower, upper;
+      load_lanes(lower, down + b * kLanes);
+      load_lanes(upper, up + b * kLanes);
+      const FloatLanes even = lower + upper;
+      const FloatLanes odd = lower - upper;
+      for (int q = 0; q <= Order; ++q) column[q][b] += weights[q] * ((q & 1) ? odd : even);
+    }
+  }
+}
+
+template <int Order, int W>
+[[gnu::always_inline]] inline void raw_moments(const PatchView& patch, double (*raw)[kMaxOrder + 1]) {
+  FloatLanes column[Order + 1][W / kLanes];
+  column_sums<Order, W>(patch, column);
+  const int r = patch.radius;
+  // raw[p][q] = sum_x x^p column[q][x], folded the same way in x.
+  for (int q = 0; q <= Order; ++q) {
+    float col[W];
+    std::memcpy(col, column[q], sizeof col);
+    double acc[Order + 1] = {col[r]};  // x = 0 contributes to p = 0 only
+    for (int d = 1; d <= r; ++d) {
+      const double even = static_cast<double>(col[r + d]) + col[r - d];
+      const double odd = static_cast<double>(col[r + d]) - col[r - d];
+      double power = 1.0;
+      for (int p = 0; p + q <= Order; ++p) {
+        acc[p] += power * ((p & 1) ? odd : even);
+        power *= d;
+      }
+    }
+    for (int p = 0; p + q <= Order; ++p) raw[p][q] = acc[p];
+  }
+}
+
+// Moves the origin to the centroid, one axis at a time (the binomial
+// expansion of (x - cx)^p (y - cy)^q is separable).
+template <int Order>
+[[gnu::always_inline]] inline void central_moments(const double (*raw)[kMaxOrder + 1], double cx, double cy,
+                                                   double (*mu)[kMaxOrder + 1]) {
+  double px[Order + 1], py[Order + 1];  // powers of -cx, -cy
+  px[0] = py[0] = 1.0;
+  for (int k = 1; k <= Order; ++k) {
+    px[k] = px[k - 1] * -cx;
+    py[k] = py[k - 1] * -cy;
+  }
+  double shifted[Order + 1][Order + 1] = {};
+  for (int q = 0; q <= Order; ++q)
+    for (int p = 0; p + q <= Order; ++p) {
+      double sum = 0.0;
+      for (int i = 0; i <= p; ++i) sum += kBinomial[p][i] * px[p - i] * raw[i][q];
+      shifted[p][q] = sum;
+    }
+  for (int p = 0; p <= Order; ++p)
+    for (int q = 0; p + q <= Order; ++q) {
+      double sum = 0.0;
+      for (int j = 0; j <= q; ++j) sum += kBinomial[q][j] * py[q - j] * shifted[p][j];
+      mu[p][q] = sum;
+    }
+}
+
+template <int Order>
+[[gnu::always_inline]] inline void moments_of_order(const PatchView& patch, PatchMoments& out) {
+  double raw[kMaxOrder + 1][kMaxOrder + 1] = {};
+  switch (lane_width(patch.size())) {
+    case 8: raw_moments<Order, 8>(patch, raw); break;
+    case 16: raw_moments<Order, 16>(patch, raw); break;
+    case 24: raw_moments<Order, 24>(patch, raw); break;
+    default: CV_Error(cv::Error::StsOutOfRange, "patch radius exceeds the kernels' 10 pixels");
+  }
+  const double m00 = raw[0][0];
+  if (!(m00 > 0.0)) return;  // no mass: every moment stays 0
+  const double cx = Order >= 1 ? raw[1][0] / m00 : 0.0;
+  const double cy = Order >= 1 ? raw[0][1] / m00 : 0.0;
+  central_moments<Order>(raw, cx, cy, out.mu);
+  if (Order >= 1) out.mu[1][0] = out.mu[0][1] = 0.0;  // zero by definition, rounding aside
+
+  const double root = std::sqrt(m00);
+  double scale = 1.0 / m00;
+  for (int k = 0; k <= kMaxOrder; ++k) {
+    out.eta_scale[k] = scale;
+    scale /= root;
+  }
+  out.mass_powers[0] = 1.0;
+  for (int k = 1; k < 15; ++k) out.mass_powers[k] = out.mass_powers[k - 1] * m00;
+}
+
+}  // namespace
+
+FACADESLAM_KERNEL
+void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out) {
+  out = PatchMoments{};
+  out.order = order;
+  switch (order) {
+    case 0: return moments_of_order<0>(patch, out);
+    case 1: return moments_of_order<1>(patch, out);
+    case 2: return moments_of_order<2>(patch, out);
+    case 3: return moments_of_order<3>(patch, out);
+    case 4: return moments_of_order<4>(patch, out);
+    case 5: return moments_of_order<5>(patch, out);
+    default: break;
+  }
+  CV_Error(cv::Error::StsOutOfRange, "moment order must be 0..5");
+}
+
+}  // namespace facadeslam::semantics

@@ -1,0 +1,29 @@
+#pragma once
+// Intensity-weighted moments of a patch (thesis III.4.2, eqs. III.31-34):
+// raw M_pq = sum x^p y^q I(x, y) with x to the right and y down, measured
+// from the patch centre; central mu_pq about the intensity centroid; and the
+// normalised eta_pq = mu_pq / mu00^(1 + (p+q)/2). Shared by the central
+// moment, Hu and affine-invariant modules, computed once per channel.
+#include "semantics/descriptor/modules/patch_view.hpp"
+
+namespace facadeslam::semantics {
+
+inline constexpr int kMaxMomentOrder = 5;
+
+struct PatchMoments {
+  int order = -1;  // highest p+q computed
+  double mu[kMaxMomentOrder + 1][kMaxMomentOrder + 1] = {};  // central mu[p][q]; mu[0][0] = mass
+  double eta_scale[kMaxMomentOrder + 1] = {};  // 1 / mu00^(1 + k/2), 0 without mass
+  double mass_powers[15] = {};                 // mu00^k, k = 0..14 (affine invariants)
+
+  double mass() const { return mu[0][0]; }
+  // Normalised central moment; 0 for a patch without mass.
+  double eta(int p, int q) const { return mu[p][q] * eta_scale[p + q]; }
+};
+
+// Moments up to `order` (0..5). A patch whose total intensity is not
+// positive (e.g. all black) has all moments 0. Reads rows with the slack of
+// PatchView::kReadSlack.
+void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out);
+
+}  // namespace facadeslam::semantics

@@ -1,0 +1,79 @@
+#include "sequences/synth/synthesize.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/util/atomic_write.hpp"
+#include "core/util/error.hpp"
+#include "sequences/synth/contact_sheet.hpp"
+#include "sequences/synth/frame_synthesizer.hpp"
+#include "sequences/synth/label_classes.hpp"
+#include "sequences/synth/sequence_writer.hpp"
+
+namespace facadeslam::synth {
+namespace {
+
+Json report(const SceneSpec& spec, const std::string& renderer) {
+  Json j = Json::object();
+  j["generator"] = "facadeslam synth";
+  j["scene"] = spec.path.string();
+  j["frames"] = spec.frames;
+  j["fps"] = spec.fps;
+  j["seed"] = static_cast<long long>(spec.seed);
+  j["width"] = spec.camera.width();
+  j["height"] = spec.camera.height();
+  j["camera_model"] = spec.camera.model_name();
+  j["noise_sigma"] = spec.noise_sigma;
+  j["anisotropy"] = spec.anisotropy;
+  Json blur = Json::object();
+  blur["samples"] = spec.motion_blur.samples;
+  blur["shutter"] = spec.motion_blur.shutter;
+  j["motion_blur"] = blur;
+  j["lighting_keys"] = static_cast<int>(spec.lighting.size());
+  j["facades"] = static_cast<int>(spec.facades.size());
+  j["cars"] = static_cast<int>(spec.cars.size());
+  j["vegetation"] = static_cast<int>(spec.vegetation.size());
+  j["trajectory_seconds"] = spec.trajectory_duration();
+  j["renderer"] = renderer;
+  Json classes = Json::array();
+  for (const auto& c : facade_classes()) classes.push_back(std::string(c.name));
+  j["classes"] = classes;
+  return j;
+}
+
+}  // namespace
+
+SynthSummary synthesize_sequence(const SceneSpec& spec, const std::filesystem::path& folder,
+                                 const SynthOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameSynthesizer synthesizer(spec);
+  SequenceWriter writer(folder, spec);
+  const std::vector<int> sheet_frames =
+      options.contact_sheet.empty() ? std::vector<int>{} : contact_sheet_frames(spec.frames, options.contact_sheet_frames);
+  ContactSheet sheet(spec.path.stem().string() + "  (" + std::to_string(spec.frames) + " frames, " +
+                     std::to_string(spec.camera.width()) + "x" + std::to_string(spec.camera.height()) + ")");
+  for (int i = 0; i < spec.frames; ++i) {
+    const SynthFrame frame = synthesizer.render(i);
+    writer.write(frame);
+    if (std::binary_search(sheet_frames.begin(), sheet_frames.end(), i)) {
+      char caption[64];
+      std::snprintf(caption, sizeof caption, "frame %d  t=%.2fs", i, frame.timestamp);
+      sheet.add(caption, frame.colour, colours_from_label_ids(frame.labels));
+    }
+    if (options.progress) options.progress(i + 1);
+  }
+  SynthSummary summary;
+  summary.frames = spec.frames;
+  summary.renderer = synthesizer.gl_renderer();
+  writer.finish(report(spec, summary.renderer));
+  if (!options.contact_sheet.empty())
+    write_file_atomically(options.contact_sheet, [&](const std::filesystem::path& tmp) {
+      if (!cv::imwrite(tmp.string(), sheet.image())) fail_file(options.contact_sheet, "cannot write the PNG image");
+    });
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace facadeslam::synth

@@ -1,0 +1,61 @@
+#include "slam/slam_options.hpp"
+
+#include "core/config/config_node.hpp"
+
+namespace facadeslam {
+namespace {
+
+void read_tracker(const ConfigNode& c, TrackerOptions& t) {
+  if (const auto fast = c.optional_child("fast_thresholds")) {
+    for (int l = 0; l < kPyramidLevels; ++l)
+      t.pyramid.fast[static_cast<std::size_t>(l)].threshold =
+          fast->get_int("level" + std::to_string(l), Range::closed(1, 255), t.pyramid.fast[static_cast<std::size_t>(l)].threshold);
+    fast->finish();
+  }
+  t.coarse_stage = c.get_bool("coarse_stage", t.coarse_stage);
+  t.coarse_max_points = c.get_int("coarse_max_points", Range::closed(0, 1000), t.coarse_max_points);
+  t.coarse_radius = c.get_double("coarse_radius_px", Range::positive(500), t.coarse_radius);
+  t.fine_max_points = c.get_int("fine_max_points", Range::closed(10, 100000), t.fine_max_points);
+  t.fine_radius = c.get_double("fine_radius_px", Range::positive(200), t.fine_radius);
+  t.fine_radius_after_coarse = c.get_double("fine_radius_after_coarse_px", Range::positive(200), t.fine_radius_after_coarse);
+  t.velocity_decay = c.get_double("velocity_decay", Range::closed(0, 1), t.velocity_decay);
+  t.quality_good = c.get_double("quality_good", Range::closed(0, 1), t.quality_good);
+  t.quality_lost = c.get_double("quality_lost", Range::closed(0, 1), t.quality_lost);
+  if (t.quality_lost > t.quality_good) c.fail("quality_lost", "a value not above quality_good");
+  t.min_found = c.get_int("min_found", Range::closed(6, 10000), t.min_found);
+  t.keyframe_min_frames = c.get_int("keyframe_min_frames", Range::closed(1, 10000), t.keyframe_min_frames);
+  t.keyframe_min_distance = c.get_double("keyframe_min_distance", Range::positive(100), t.keyframe_min_distance);
+  t.search.max_zmssd_per_pixel =
+      static_cast<float>(c.get_double("max_zmssd_per_pixel", Range::positive(65025), t.search.max_zmssd_per_pixel));
+  t.seed = static_cast<std::uint64_t>(c.get_int("seed", Range::closed(0, 2147483647), static_cast<int>(t.seed)));
+  c.finish();
+}
+
+void read_mapmaker(const ConfigNode& c, MapMakerOptions& m) {
+  m.initialisation.min_median_parallax_deg =
+      c.get_double("init_min_parallax_deg", Range::positive(45), m.initialisation.min_median_parallax_deg);
+  m.initialisation.min_points = c.get_int("init_min_points", Range::closed(8, 100000), m.initialisation.min_points);
+  m.local_ba_selection.neighbours = static_cast<std::size_t>(
+      c.get_int("local_ba_neighbours", Range::closed(1, 100), static_cast<int>(m.local_ba_selection.neighbours)));
+  m.local_ba.max_iterations = c.get_int("local_ba_iterations", Range::closed(1, 1000), m.local_ba.max_iterations);
+  m.global_ba.max_iterations = c.get_int("global_ba_iterations", Range::closed(1, 1000), m.global_ba.max_iterations);
+  m.sync_global_ba_every = c.get_int("sync_global_ba_every", Range::closed(1, 1000), m.sync_global_ba_every);
+  m.epipolar.max_zmssd_per_pixel = static_cast<float>(
+      c.get_double("epipolar_max_zmssd_per_pixel", Range::positive(65025), m.epipolar.max_zmssd_per_pixel));
+  m.outlier_min_searches = c.get_int("outlier_min_searches", Range::closed(1, 100000), m.outlier_min_searches);
+  m.outlier_max_found_ratio = c.get_double("outlier_max_found_ratio", Range::closed(0, 1), m.outlier_max_found_ratio);
+  c.finish();
+}
+
+}  // namespace
+
+SlamOptions load_slam_options(const std::filesystem::path& path) {
+  SlamOptions options;
+  const ConfigNode root = ConfigNode::load_file(path);
+  if (const auto tracker = root.optional_child("tracker")) read_tracker(*tracker, options.tracker);
+  if (const auto mapmaker = root.optional_child("mapmaker")) read_mapmaker(*mapmaker, options.mapmaker);
+  root.finish();
+  return options;
+}
+
+}  // namespace facadeslam

@@ -1,0 +1,72 @@
+#pragma once
+// The SLAM system behind `facadeslam replay`: one Map shared by the tracker
+// (run on the caller's thread, frame by frame), the map maker (its own thread,
+// or inline in synchronous mode) and, later, the semantic worker.
+//
+// Before a map exists the system initialises automatically: it tracks the
+// corners of a reference frame with the two-view initialiser until a frame
+// with enough parallax gives a reconstruction, which the map maker turns into
+// the first two keyframes.
+#include <memory>
+#include <optional>
+
+#include "core/camera/camera.hpp"
+#include "core/map/keyframe_queue.hpp"
+#include "core/map/map.hpp"
+#include "mapmaker/init/two_view_initialiser.hpp"
+#include "mapmaker/mapping/map_maker.hpp"
+#include "slam/slam_options.hpp"
+#include "tracker/tracking/tracker.hpp"
+
+namespace facadeslam {
+
+enum class FrameStatus { initialising, initialised, tracking, lost, relocalised };
+const char* to_string(FrameStatus status);
+
+struct FrameReport {
+  std::size_t index = 0;
+  double timestamp = 0.0;
+  FrameStatus status = FrameStatus::initialising;
+  bool has_pose = false;
+  SE3d T_c_w;
+  TrackingResult tracking;
+  double pyramid_ms = 0.0;
+  double total_ms = 0.0;
+};
+
+class System {
+ public:
+  System(Camera camera, SlamOptions options);
+  ~System();
+
+  // Starts from a saved map instead of initialising (map_io); the first
+  // frames relocalise against it.
+  void load_map(const std::filesystem::path& path);
+
+  FrameReport process(std::size_t index, double timestamp, const cv::Mat& colour);
+  // Waits for the map maker to finish queued work (threaded mode), then runs
+  // a final global bundle adjustment in synchronous mode.
+  void finish();
+
+  bool initialised() const { return initialised_; }
+  const Map& map() const { return map_; }
+  Map& map() { return map_; }
+  const Camera& camera() const { return camera_; }
+  MapMakerStats map_maker_stats() const { return map_maker_.stats(); }
+
+ private:
+  FrameReport initialise(std::size_t index, double timestamp, const cv::Mat& colour,
+                         std::shared_ptr<const ImagePyramid> pyramid, FrameReport report);
+
+  Camera camera_;
+  SlamOptions options_;
+  Map map_;
+  KeyFrameQueue queue_;
+  MapMaker map_maker_;
+  Tracker tracker_;
+  TwoViewInitialiser initialiser_;
+  bool initialised_ = false;
+  std::optional<MapMakerFrame> reference_;  // the initialiser's reference frame
+};
+
+}  // namespace facadeslam

@@ -1,0 +1,268 @@
+#include "tracker/tracking/tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <shared_mutex>
+#include <unordered_map>
+
+#include <spdlog/spdlog.h>
+
+#include "tracker/reloc/small_blurry_image.hpp"
+
+namespace facadeslam {
+
+const char* to_string(TrackingQuality quality) {
+  switch (quality) {
+    case TrackingQuality::good: return "good";
+    case TrackingQuality::dodgy: return "dodgy";
+    case TrackingQuality::bad: return "bad";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Border (level-0 pixels) a projection must keep so the 8x8 patch at level 0
+// fits; coarser levels are checked by the patch search itself.
+constexpr double kProjectionBorder = 4.0;
+
+}  // namespace
+
+struct Tracker::Candidate {
+  std::size_t point;            // index into the snapshot
+  Eigen::Vector2d pixel;        // predicted level-0 position
+  Eigen::Matrix2d warp;         // source-level pixel -> current level-0 pixels
+  int search_level;
+};
+
+Tracker::Tracker(Camera camera, Map& map, KeyFrameQueue& keyframes, TrackerOptions options)
+    : camera_(std::move(camera)), map_(map), keyframes_(keyframes), options_(std::move(options)) {}
+
+void Tracker::start(const SE3d& T_c_w, std::size_t frame_index) {
+  started_ = true;
+  T_c_w_ = T_c_w;
+  velocity_.setZero();
+  lost_frames_ = 0;
+  last_keyframe_frame_ = frame_index;
+}
+
+void Tracker::reset() {
+  started_ = false;
+  velocity_.setZero();
+  lost_frames_ = 0;
+}
+
+std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
+                                                     const SE3d& T_c_w) const {
+  std::vector<Candidate> out;
+  out.reserve(points.size());
+  const Eigen::Matrix3d R_c_w = T_c_w.rotation_matrix();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& g = points[i].geometry;
+    if (!options_.unreliable_labels.empty()) {
+      const SemanticLabel label = points[i].point->label();
+      if (options_.unreliable_labels.count(label.label) && label.confidence >= options_.unreliable_min_confidence)
+        continue;
+    }
+    const Eigen::Vector3d p_c = T_c_w * g.p_w;
+    if (p_c.z() <= 1e-6) continue;
+    const Eigen::Vector2d px = camera_.project(p_c);
+    if (!camera_.in_image(px, kProjectionBorder)) continue;
+    const Eigen::Matrix2d warp = tracker::patch_warp(p_c, R_c_w, g, camera_);
+    const int level = tracker::choose_search_level(warp.determinant(), options_.templates);
+    if (level < 0) continue;
+    out.push_back({i, px, warp, level});
+  }
+  return out;
+}
+
+std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>& points,
+                                                const std::vector<Candidate>& candidates,
+                                                const ImagePyramid& pyramid, double radius_level0, int max_points,
+                                                int& searched) const {
+  std::vector<TrackedMeasurement> found;
+  searched = 0;
+  for (const auto& c : candidates) {
+    if (searched >= max_points) break;
+    const auto& point = points[c.point].point;
+    const tracker::PatchTemplate tpl = tracker::make_patch_template(point->source(), c.warp, options_.templates);
+    if (!tpl.valid()) continue;
+    ++searched;
+    const double radius = std::max(2.0, radius_level0 / static_cast<double>(1 << tpl.search_level));
+    const tracker::PatchSearchResult r = tracker::search_patch(tpl, pyramid, c.pixel, radius, options_.search);
+    point->count_search(r.found());
+    if (r.found()) found.push_back({point, r.level, r.pixel_level0});
+  }
+  return found;
+}
+
+namespace {
+
+std::vector<tracker::PoseMeasurement> to_pose_measurements(const std::vector<PointSnapshot>& points,
+                                                           const std::vector<TrackedMeasurement>& found) {
+  // The snapshot's geometry, not the live point's: the map maker may move
+  // points while we track, and we must use one consistent copy.
+  std::unordered_map<const MapPoint*, const PointGeometry*> geometry;
+  geometry.reserve(points.size());
+  for (const auto& p : points) geometry.emplace(p.point.get(), &p.geometry);
+  std::vector<tracker::PoseMeasurement> out;
+  out.reserve(found.size());
+  for (const auto& m : found) out.push_back({geometry.at(m.point.get())->p_w, m.pixel, m.level});
+  return out;
+}
+
+}  // namespace
+
+std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const TrackerInput& frame,
+                                                    TrackingResult& result) {
+  const std::vector<PointSnapshot> points = map_.snapshot_points();
+  std::mt19937_64 rng(options_.seed * 0x9E3779B97F4A7C15ULL + frame.index);
+  SE3d T_c_w = T_start;
+  double fine_radius = options_.fine_radius;
+
+  // Coarse stage: points at the coarse levels, wide radius.
+  if (options_.coarse_stage) {
+    const auto t0 = Clock::now();
+    std::vector<Candidate> candidates = project_map(points, T_c_w);
+    std::erase_if(candidates, [&](const Candidate& c) { return c.search_level < options_.coarse_min_level; });
+    std::shuffle(candidates.begin(), candidates.end(), rng);
+    const auto found = search(points, candidates, *frame.pyramid, options_.coarse_radius, options_.coarse_max_points,
+                              result.coarse_searched);
+    result.coarse_found = static_cast<int>(found.size());
+    result.timings.coarse_ms = ms_since(t0);
+    if (result.coarse_found >= options_.coarse_min_found) {
+      const auto t1 = Clock::now();
+      const auto measurements = to_pose_measurements(points, found);
+      const auto update = tracker::update_pose(T_c_w, measurements, camera_, options_.pose);
+      if (update.ok) {
+        T_c_w = update.T_c_w;
+        fine_radius = options_.fine_radius_after_coarse;
+      }
+      result.timings.pose_ms += ms_since(t1);
+    }
+  }
+
+  // Fine stage: all levels, tight radius, from the coarse pose.
+  const auto t0 = Clock::now();
+  std::vector<Candidate> candidates = project_map(points, T_c_w);
+  std::shuffle(candidates.begin(), candidates.end(), rng);
+  std::vector<TrackedMeasurement> found =
+      search(points, candidates, *frame.pyramid, fine_radius, options_.fine_max_points, result.fine_searched);
+  result.timings.fine_ms = ms_since(t0);
+
+  const auto t1 = Clock::now();
+  std::vector<TrackedMeasurement> inliers;
+  if (static_cast<int>(found.size()) >= 6) {
+    const auto measurements = to_pose_measurements(points, found);
+    const auto update = tracker::update_pose(T_c_w, measurements, camera_, options_.pose);
+    if (update.ok) {
+      T_c_w = update.T_c_w;
+      result.inlier_rms_px = update.inlier_rms_px;
+      for (std::size_t i = 0; i < found.size(); ++i)
+        if (update.inliers[i]) inliers.push_back(found[i]);
+    }
+  }
+  result.timings.pose_ms += ms_since(t1);
+  result.fine_found = static_cast<int>(inliers.size());
+  result.T_c_w = T_c_w;
+
+  const double ratio =
+      result.fine_searched > 0 ? static_cast<double>(result.fine_found) / result.fine_searched : 0.0;
+  if (result.fine_found < options_.min_found || ratio < options_.quality_lost)
+    result.quality = TrackingQuality::bad;
+  else if (ratio < options_.quality_good)
+    result.quality = TrackingQuality::dodgy;
+  else
+    result.quality = TrackingQuality::good;
+  return inliers;
+}
+
+TrackingResult Tracker::track(const TrackerInput& frame) {
+  TrackingResult result;
+  if (!started_) return result;
+
+  if (lost_frames_ >= options_.lost_frames_before_relocalising) {
+    const auto t0 = Clock::now();
+    const cv::Mat sbi = make_small_blurry_image(*frame.pyramid);
+    const auto keyframes = map_.keyframes();
+    std::vector<SE3d> poses;
+    {
+      std::shared_lock lock(map_.mutex());
+      for (const auto& kf : keyframes) poses.push_back(kf->T_c_w());
+    }
+    const auto candidate = find_relocalisation_candidate(sbi, keyframes, poses, camera_, options_.relocaliser);
+    result.timings.relocalise_ms = ms_since(t0);
+    if (!candidate) {
+      ++lost_frames_;
+      return result;
+    }
+    auto inliers = track_from(candidate->T_c_w, frame, result);
+    if (result.quality == TrackingQuality::bad) {
+      ++lost_frames_;
+      return result;
+    }
+    spdlog::info("frame {}: relocalised against keyframe {} after {} lost frames", frame.index,
+                 candidate->keyframe->id(), lost_frames_);
+    lost_frames_ = 0;
+    velocity_.setZero();
+    T_c_w_ = result.T_c_w;
+    result.tracked = true;
+    result.relocalised = true;
+    return result;
+  }
+
+  const SE3d predicted = SE3d::exp(options_.velocity_decay * velocity_) * T_c_w_;
+  auto inliers = track_from(predicted, frame, result);
+  if (result.quality == TrackingQuality::bad) {
+    ++lost_frames_;
+    velocity_.setZero();
+    return result;
+  }
+  velocity_ = (result.T_c_w * T_c_w_.inverse()).log();
+  T_c_w_ = result.T_c_w;
+  result.tracked = true;
+
+  if (wants_keyframe(result, frame.index)) {
+    request_keyframe(frame, result.T_c_w, std::move(inliers));
+    result.keyframe_requested = true;
+  }
+  return result;
+}
+
+bool Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {
+  if (result.quality != TrackingQuality::good) return false;
+  if (frame_index < last_keyframe_frame_ + static_cast<std::size_t>(options_.keyframe_min_frames)) return false;
+  if (keyframes_.size() >= options_.keyframe_max_queue) return false;
+  // Far enough from every keyframe, in units of that keyframe's scene depth.
+  const Eigen::Vector3d centre = result.T_c_w.inverse().translation();
+  const auto keyframes = map_.keyframes();
+  std::shared_lock lock(map_.mutex());
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& kf : keyframes) {
+    const double d = (kf->centre_w() - centre).norm() / std::max(kf->mean_depth(), 1e-9);
+    nearest = std::min(nearest, d);
+  }
+  return nearest > options_.keyframe_min_distance;
+}
+
+void Tracker::request_keyframe(const TrackerInput& frame, const SE3d& T_c_w,
+                               std::vector<TrackedMeasurement> measurements) {
+  KeyFrameCandidate candidate;
+  candidate.frame_index = frame.index;
+  candidate.timestamp = frame.timestamp;
+  candidate.T_c_w = T_c_w;
+  candidate.pyramid = frame.pyramid;
+  candidate.colour = frame.colour;
+  candidate.small_blurred = make_small_blurry_image(*frame.pyramid);
+  candidate.measurements = std::move(measurements);
+  keyframes_.push(std::move(candidate));
+  last_keyframe_frame_ = frame.index;
+}
+
+}  // namespace facadeslam

@@ -1,0 +1,58 @@
+#pragma once
+// Every tunable of the tracker, with PTAM's values as defaults. Loaded from
+// the `tracker:` section of configs/slam.yaml (slam/slam_config.hpp).
+#include <cstdint>
+#include <set>
+
+#include "core/image/image_pyramid.hpp"
+#include "tracker/patch_search.hpp"
+#include "tracker/patch_warp.hpp"
+#include "tracker/pose_update.hpp"
+#include "tracker/reloc/relocaliser.hpp"
+
+namespace facadeslam {
+
+struct TrackerOptions {
+  PyramidOptions pyramid;
+  tracker::TemplateOptions templates;
+  tracker::SearchOptions search;
+  tracker::PoseUpdateOptions pose;
+  RelocaliserOptions relocaliser;
+
+  // Coarse stage: a few points found at the coarse levels, searched over a
+  // wide radius, to survive fast motion. Radii are in level-0 pixels.
+  bool coarse_stage = true;
+  int coarse_min_level = 2;       // points searched at this level or above
+  int coarse_max_points = 60;
+  int coarse_min_found = 10;      // below this the coarse pose is not used
+  double coarse_radius = 30.0;
+  // Fine stage: up to this many points over all levels, tight radius.
+  int fine_max_points = 1000;
+  double fine_radius = 8.0;       // without a coarse stage
+  double fine_radius_after_coarse = 5.0;
+
+  // Motion model: constant velocity, decayed (PTAM).
+  double velocity_decay = 0.9;
+
+  // Tracking quality = found / searched in the fine stage.
+  double quality_good = 0.3;
+  double quality_lost = 0.13;
+  int min_found = 20;             // fewer points found is a failure whatever the ratio
+  int lost_frames_before_relocalising = 1;
+
+  // Keyframes: only when tracking is good, enough frames have passed, and
+  // the camera is far enough from every keyframe relative to scene depth.
+  int keyframe_min_frames = 20;
+  double keyframe_min_distance = 0.12;  // x the nearest keyframe's mean scene depth
+  std::size_t keyframe_max_queue = 3;   // map maker busy: wait
+
+  // Semantic filtering: points whose label is one of these (with at least
+  // this confidence) are not tracked (sky, vegetation, cars move or have no
+  // stable texture). Empty until the semantic worker labels the map.
+  std::set<std::uint8_t> unreliable_labels;
+  float unreliable_min_confidence = 0.5f;
+
+  std::uint64_t seed = 1;  // point-sampling order; fixed for reproducible runs
+};
+
+}  // namespace facadeslam
