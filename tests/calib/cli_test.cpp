@@ -39,9 +39,12 @@ struct CommandResult {
 CommandResult calibrate(const test::TempDir& dir, const std::string& arguments) {
   const auto out = dir / "stdout.txt";
   const auto err = dir / "stderr.txt";
-  const std::string command = std::string("'") + FACADESLAM_BINARY + "' calibrate " + arguments + " > '" +
-                              out.string() + "' 2> '" + err.string() + "'";
-  const int status = std::system(command.c_str());
+  // Built with a stream: GCC 12 misreports -Wrestrict on chains of
+  // std::string operator+ with literals.
+  std::ostringstream command;
+  command << "'" << FACADESLAM_BINARY << "' calibrate " << arguments << " > '" << out.string() << "' 2> '"
+          << err.string() << "'";
+  const int status = std::system(command.str().c_str());
   CommandResult result;
   if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   result.out = read_file(out);
@@ -49,7 +52,11 @@ CommandResult calibrate(const test::TempDir& dir, const std::string& arguments) 
   return result;
 }
 
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+std::string quoted(const std::filesystem::path& path) {
+  std::ostringstream text;
+  text << "'" << path.string() << "'";
+  return text.str();
+}
 
 class CalibrateCommand : public ::testing::Test {
  protected:
