@@ -285,4 +285,13 @@ BENCHMARK(BM_PoseUpdate)->Args({50, 1})->Args({1000, 1})->Args({1000, 10})->Unit
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// The scene is built before the run so that the image used appears in the
+// report's context (AddCustomContext must precede RunSpecifiedBenchmarks).
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  scene();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

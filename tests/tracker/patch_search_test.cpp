@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <ostream>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -215,6 +216,10 @@ struct SearchCase {
   double distance;
   double roll_deg;
 };
+
+void PrintTo(const SearchCase& c, std::ostream* os) {
+  *os << "source level " << c.source_level << ", distance " << c.distance << ", roll " << c.roll_deg;
+}
 
 class RenderedSearch : public ::testing::TestWithParam<SearchCase> {};
 

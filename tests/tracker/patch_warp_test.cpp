@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <ostream>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -184,6 +185,12 @@ struct WarpCase {
   double tilt_deg;
   int expected_level;
 };
+
+// Readable parameters in test output (gtest would otherwise dump raw bytes).
+void PrintTo(const WarpCase& c, std::ostream* os) {
+  *os << "source level " << c.source_level << ", distance " << c.distance << ", roll " << c.roll_deg << ", tilt "
+      << c.tilt_deg << " -> level " << c.expected_level;
+}
 
 class RenderedWarp : public ::testing::TestWithParam<WarpCase> {};
 
