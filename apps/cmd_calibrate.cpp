@@ -1,7 +1,9 @@
 // `facadeslam calibrate`: chessboard images -> camera YAML (+ coverage and
 // residual PNG, optional JSON report). The work is in calib/; this file
 // only maps options onto a CalibrationRequest and writes the outputs.
+#include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -73,6 +75,20 @@ std::string check_board_size(const std::string& text) {
   return {};
 }
 
+// CLI11's PositiveNumber prints the whole double range in its message.
+std::string check_positive_length(const std::string& text) {
+  double value = 0.0;
+  std::size_t used = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !std::isfinite(value) || value <= 0.0)
+    return "'" + text + "': expected a number > 0";
+  return {};
+}
+
 }  // namespace
 
 void add_calibrate_command(CLI::App& app) {
@@ -90,7 +106,7 @@ void add_calibrate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--square", options->square,
                   "Side of one square in metres (scales the board poses only; intrinsics do not depend on it)")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Validator(check_positive_length, "METRES", "square size"))
       ->capture_default_str();
   cmd->add_option("--model", options->model, "Camera model: pinhole (OpenCV radial-tangential) or atan (PTAM FOV)")
       ->check(CLI::IsMember({"pinhole", "atan"}))
@@ -99,7 +115,7 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_flag("--fix-k3", options->fix_k3, "Pinhole: keep k3 = 0 (for few or central views)");
   cmd->add_option("--max-blur", options->max_edge_width,
                   "Reject views whose board edges are wider than this many pixels (10-90 % rise)")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Validator(check_positive_length, "PIXELS", "edge width"))
       ->capture_default_str();
   cmd->add_option("--duplicate-fraction", options->duplicate_fraction,
                   "Reject a view whose corners lie within this fraction of the image diagonal of an accepted view's")

@@ -88,8 +88,8 @@ cv::Mat render_residual_plot(const ViewCollection& views, const CalibrationResul
 
   cv::Point cursor(frame_w + 12, 24);
   text_line(image, "camera model: " + result.camera.model_name(), cursor);
-  text_line(image, "image " + size_text(size) + ", " + std::to_string(views.views.size()) + " of " +
-                       std::to_string(views.image_count) + " images used",
+  text_line(image, "image size " + size_text(size), cursor);
+  text_line(image, std::to_string(views.views.size()) + " of " + std::to_string(views.image_count) + " images used",
             cursor);
   text_line(image, format("RMS reprojection error %.3f px", result.rms_px), cursor);
   text_line(image, format("residual vectors x%g", scale), cursor);

@@ -26,7 +26,7 @@ namespace facadeslam::test {
 // point spread: real boards show 2.5-3.5 px wide edges (OpenCV's samples),
 // and razor-sharp edges bias cv::cornerSubPix more than real images do.
 std::vector<cv::Mat> render_board_views(const Camera& camera, const calib::BoardSpec& board,
-                                        const std::vector<SE3d>& T_c_b, int samples_per_axis = 4,
+                                        const std::vector<SE3d>& T_c_b, int samples_per_axis = 3,
                                         double optics_blur_sigma = 1.0);
 
 // `count` (<= 12) board poses with the board's centre aimed at points
