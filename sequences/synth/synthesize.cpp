@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <future>
+#include <memory>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -54,16 +57,23 @@ SynthSummary synthesize_sequence(const SceneSpec& spec, const std::filesystem::p
       options.contact_sheet.empty() ? std::vector<int>{} : contact_sheet_frames(spec.frames, options.contact_sheet_frames);
   ContactSheet sheet(spec.path.stem().string() + "  (" + std::to_string(spec.frames) + " frames, " +
                      std::to_string(spec.camera.width()) + "x" + std::to_string(spec.camera.height()) + ")");
+  // Frame i is encoded and written on a second thread while frame i + 1 is
+  // rendered (PNG encoding is about as costly as rendering). One write at a
+  // time, in frame order; its error, if any, surfaces at the next get().
+  std::future<void> writing;
   for (int i = 0; i < spec.frames; ++i) {
-    const SynthFrame frame = synthesizer.render(i);
-    writer.write(frame);
+    auto frame = std::make_shared<const SynthFrame>(synthesizer.render(i));
     if (std::binary_search(sheet_frames.begin(), sheet_frames.end(), i)) {
       char caption[64];
-      std::snprintf(caption, sizeof caption, "frame %d  t=%.2fs", i, frame.timestamp);
-      sheet.add(caption, frame.colour, colours_from_label_ids(frame.labels));
+      std::snprintf(caption, sizeof caption, "frame %d  t=%.2fs", i, frame->timestamp);
+      sheet.add(caption, frame->colour, colours_from_label_ids(frame->labels));
     }
-    if (options.progress) options.progress(i + 1);
+    if (writing.valid()) writing.get();
+    if (options.progress && i > 0) options.progress(i);
+    writing = std::async(std::launch::async, [&writer, frame] { writer.write(*frame); });
   }
+  if (writing.valid()) writing.get();
+  if (options.progress) options.progress(spec.frames);
   SynthSummary summary;
   summary.frames = spec.frames;
   summary.renderer = synthesizer.gl_renderer();
