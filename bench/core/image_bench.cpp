@@ -11,13 +11,10 @@ namespace {
 
 using namespace facadeslam;
 
+std::string g_image_source;
+
 const cv::Mat& frame() {
-  static const cv::Mat image = [] {
-    std::string source;
-    cv::Mat img = bench::facade_image({640, 480}, &source);
-    benchmark::AddCustomContext("image", source);
-    return img;
-  }();
+  static const cv::Mat image = bench::facade_image({640, 480}, &g_image_source);
   return image;
 }
 
@@ -69,4 +66,14 @@ BENCHMARK(BM_OpenCvFastLevel0)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// Own main so the image's provenance is in the report header (the context
+// must be added before the benchmarks run).
+int main(int argc, char** argv) {
+  frame();
+  benchmark::AddCustomContext("image", g_image_source);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
