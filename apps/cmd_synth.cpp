@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <regex>
 #include <string>
 
 #include <spdlog/spdlog.h>
@@ -29,11 +28,13 @@ struct SynthCliOptions {
 
 // "640x480" -> (640, 480); Error otherwise.
 std::pair<int, int> parse_resolution(const std::string& text) {
-  static const std::regex pattern(R"((\d{2,5})x(\d{2,5}))");
-  std::smatch m;
-  if (!std::regex_match(text, m, pattern))
+  const auto x = text.find('x');
+  const auto digits = [](const std::string& s) {
+    return !s.empty() && s.size() <= 5 && s.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (x == std::string::npos || !digits(text.substr(0, x)) || !digits(text.substr(x + 1)))
     throw Error("--resolution: expected WIDTHxHEIGHT such as 640x480, got '" + text + "'");
-  const int w = std::stoi(m[1].str()), h = std::stoi(m[2].str());
+  const int w = std::stoi(text.substr(0, x)), h = std::stoi(text.substr(x + 1));
   if (w < 16 || h < 16 || w > 8192 || h > 8192)
     throw Error("--resolution: expected a width and height in [16, 8192], got '" + text + "'");
   return {w, h};

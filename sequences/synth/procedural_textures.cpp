@@ -48,7 +48,7 @@ cv::Vec3b bgr(double b, double g, double r) {
 
 // Texel centre -> world (x, y).
 double texel_x(const GroundArea& a, int i) { return a.x0 + (i + 0.5) * a.texel; }
-double texel_y(const GroundArea& a, int j) { return a.y1 - (j + 0.5) * a.texel; }
+double texel_y(const GroundArea& a, int j) { return a.y1 - (j + 0.5) * a.texel_y; }
 
 // Bilinear upsampling of `coarse`, sampled every `step` fine pixels starting
 // at fine pixel 0, to rows x columns (CV_32FC1).

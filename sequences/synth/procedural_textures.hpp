@@ -21,15 +21,17 @@ double fractal_noise(double x, double y, int octaves, std::uint64_t seed);
 double fractal_noise(double x, double y, double z, int octaves, std::uint64_t seed);
 
 // A rectangle of the ground plane: texel (i, j) of the texture covers world
-// x in [x0 + i texel, x0 + (i+1) texel) and y in (y1 - (j+1) texel,
-// y1 - j texel] (rows run towards -y, so that the texture lies on a quad
-// whose `down` edge points to -y).
+// x in [x0 + i texel, x0 + (i+1) texel) and y in (y1 - (j+1) texel_y,
+// y1 - j texel_y] (rows run towards -y, so that the texture lies on a quad
+// whose `down` edge points to -y). texel_y is texel stretched a little so
+// that a strip's rows fill its width exactly (strips must not overlap).
 struct GroundArea {
   double x0 = 0.0;
   double y1 = 0.0;
   int columns = 1;
   int rows = 1;
   double texel = 0.02;
+  double texel_y = 0.02;
 };
 
 // Asphalt for the road of `street` (BGR): grain and aggregate, worn patches,

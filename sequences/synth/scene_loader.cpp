@@ -63,7 +63,7 @@ Photo load_photo(const ConfigNode& node, const fs::path& photo_root) {
     node.fail("label", "a label map of the image's size " + size_text(image), size_text(label_colours));
   photo.crop = cv::Rect(0, 0, image.cols, image.rows);
   if (node.has("crop")) {
-    const auto c = node.get_doubles("crop", 4);
+    const auto c = node.get_doubles("crop", 4, Range::closed(0, 1e5));
     const std::string expected = "[x, y, width, height] in whole pixels, at least 8x8, inside the " +
                                  size_text(image) + " photo";
     for (double v : c)

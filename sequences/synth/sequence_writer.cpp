@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -48,6 +47,16 @@ std::string timestamp_text(double seconds) {
   return buffer;
 }
 
+int frame_index(const std::string& file_name) {
+  if (file_name.size() != 10 || file_name.substr(6) != ".png") return -1;
+  int index = 0;
+  for (int i = 0; i < 6; ++i) {
+    if (file_name[i] < '0' || file_name[i] > '9') return -1;
+    index = index * 10 + (file_name[i] - '0');
+  }
+  return index;
+}
+
 std::string frame_file_name(int index) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%06d.png", index);
@@ -89,13 +98,10 @@ void SequenceWriter::finish(const Json& report) {
   write_json(folder_ / "synth.json", report);
 
   // Stale frames of an earlier, longer run.
-  static const std::regex frame_name(R"((\d{6})\.png)");
   for (const char* sub : kFrameFolders)
     for (const auto& entry : fs::directory_iterator(folder_ / sub)) {
-      std::smatch match;
-      const std::string name = entry.path().filename().string();
-      if (std::regex_match(name, match, frame_name) && std::stoi(match[1].str()) >= written_)
-        fs::remove(entry.path());
+      const int index = frame_index(entry.path().filename().string());
+      if (index >= written_) fs::remove(entry.path());
     }
 }
 

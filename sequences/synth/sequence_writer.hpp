@@ -30,6 +30,8 @@ namespace facadeslam::synth {
 std::string timestamp_text(double seconds);
 // "000042.png"
 std::string frame_file_name(int index);
+// The index of a frame file name ("000042.png" -> 42), -1 for any other name.
+int frame_index(const std::string& file_name);
 
 class SequenceWriter {
  public:

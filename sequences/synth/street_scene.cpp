@@ -23,17 +23,21 @@ enum Stream : std::uint64_t { kRoad = 11, kPavement, kSky, kSway };
 
 void add_ground_strip(render::Scene& scene, render::Renderer& renderer, const StreetSpec& street, double y_low,
                       double y_high, std::uint8_t label, int side, std::uint64_t seed) {
-  const int rows = std::max(1, static_cast<int>(std::ceil((y_high - y_low) / street.texel)));
-  const double height = rows * street.texel;  // exact multiple of the texel
+  // The strip is exactly y_high - y_low wide (neighbouring strips meet
+  // without overlapping, so no two coplanar surfaces fight over a pixel);
+  // its texels are stretched across by at most half a texel in all.
+  const double height = y_high - y_low;
+  const int rows = std::max(1, static_cast<int>(std::lround(height / street.texel)));
   const double length = street.end - street.start;
   const int columns = static_cast<int>(std::ceil(length / street.texel));
   for (int first = 0; first < columns; first += kTileTexels) {
     GroundArea area;
     area.x0 = street.start + first * street.texel;
-    area.y1 = y_low + height;
+    area.y1 = y_high;
     area.columns = std::min(kTileTexels, columns - first);
     area.rows = rows;
     area.texel = street.texel;
+    area.texel_y = height / rows;
     const cv::Mat texture =
         side == 0 ? road_texture(area, street, seed) : pavement_texture(area, street, side, seed);
     const Eigen::Vector3d top_left(area.x0, area.y1, 0.0);

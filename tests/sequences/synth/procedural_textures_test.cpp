@@ -13,6 +13,7 @@ GroundArea area(double x0, int columns, int rows) {
   a.columns = columns;
   a.rows = rows;
   a.texel = 0.02;
+  a.texel_y = 0.02;
   return a;
 }
 

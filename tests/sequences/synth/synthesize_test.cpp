@@ -52,6 +52,16 @@ cv::Mat read_label_ids(const fs::path& png) {
   return synth::label_ids_from_colours(cv::imread(png.string(), cv::IMREAD_COLOR), png);
 }
 
+TEST(SequenceWriter, FrameFileNamesRoundTrip) {
+  EXPECT_EQ(synth::frame_file_name(42), "000042.png");
+  EXPECT_EQ(synth::frame_index("000042.png"), 42);
+  EXPECT_EQ(synth::frame_index(synth::frame_file_name(999999)), 999999);
+  EXPECT_EQ(synth::frame_index("00042.png"), -1);
+  EXPECT_EQ(synth::frame_index("0000a2.png"), -1);
+  EXPECT_EQ(synth::frame_index("000042.jpg"), -1);
+  EXPECT_EQ(synth::timestamp_text(1.0 / 3.0), "0.333333333");
+}
+
 TEST(Synthesize, WritesTheTumStyleSequenceFolder) {
   test::TempDir dir;
   const synth::SceneSpec spec = load(dir, test::small_scene_yaml(4));
