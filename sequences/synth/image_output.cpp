@@ -1,9 +1,9 @@
 #include "sequences/synth/image_output.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "sequences/synth/deterministic_random.hpp"
 
@@ -15,21 +15,26 @@ namespace {
 // Phi^-1((k + 0.5) / 65536): a 16-bit random index then gives a normal
 // deviate (to 1/65536 in probability, far finer than 8-bit output needs)
 // without a logarithm or cosine per value.
-const std::array<float, 65536>& normal_quantiles() {
-  static const std::array<float, 65536> table = [] {
-    std::array<float, 65536> t{};
-    for (int k = 0; k < 65536; ++k) {
-      const double p = (k + 0.5) / 65536.0;
-      // Bisection on Phi(x) = erfc(-x / sqrt 2) / 2, monotonic in x.
-      double lo = -6.0, hi = 6.0;
-      for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (0.5 * std::erfc(-mid / std::numbers::sqrt2) < p ? lo : hi) = mid;
-      }
-      t[static_cast<std::size_t>(k)] = static_cast<float>(0.5 * (lo + hi));
+std::vector<float> build_normal_quantiles() {
+  std::vector<float> table(65536);
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    const double p = (static_cast<double>(k) + 0.5) / 65536.0;
+    // Bisection on Phi(x) = erfc(-x / sqrt 2) / 2, monotonic in x.
+    double lo = -6.0, hi = 6.0;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (0.5 * std::erfc(-mid / std::numbers::sqrt2) < p ? lo : hi) = mid;
     }
-    return t;
-  }();
+    table[k] = static_cast<float>(0.5 * (lo + hi));
+  }
+  return table;
+}
+
+// Held in a vector, not a std::array filled by a lambda: GCC tries to
+// constant-evaluate the latter at compile time (3.9 M erfc calls, 100 s of
+// compile time) before giving up.
+const std::vector<float>& normal_quantiles() {
+  static const std::vector<float> table = build_normal_quantiles();
   return table;
 }
 
