@@ -5,11 +5,10 @@
 #include <cstdio>
 #include <string>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/plot/line_plot.hpp"
-#include "core/util/atomic_write.hpp"
+#include "core/plot/png_file.hpp"
 #include "core/util/error.hpp"
 
 namespace facadeslam::calib {
@@ -120,16 +119,7 @@ cv::Mat render_residual_plot(const ViewCollection& views, const CalibrationResul
 void save_residual_plot(const std::filesystem::path& path, const ViewCollection& views,
                         const CalibrationResult& result, const CoverageFigures& coverage) {
   if (path.extension() != ".png") fail_file(path, "the coverage plot must be a .png file");
-  const cv::Mat image = render_residual_plot(views, result, coverage);
-  write_file_atomically(path, [&](const std::filesystem::path& tmp) {
-    bool written = false;
-    try {
-      written = cv::imwrite(tmp.string(), image);
-    } catch (const cv::Exception& e) {
-      fail_file(path, "cannot write the PNG plot (" + e.err + ")");
-    }
-    if (!written) fail_file(path, "cannot write the PNG plot");
-  });
+  plot::save_png(path, render_residual_plot(views, result, coverage));
 }
 
 }  // namespace facadeslam::calib

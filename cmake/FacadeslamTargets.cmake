@@ -12,7 +12,8 @@ elseif(NOT FACADESLAM_SANITIZE STREQUAL "")
   message(FATAL_ERROR "FACADESLAM_SANITIZE must be empty, 'address' or 'thread', not '${FACADESLAM_SANITIZE}'")
 endif()
 if(_fs_san)
-  target_compile_options(facadeslam_options INTERFACE ${_fs_san} -g)
+  # No -g here: the build type chooses the debug information (CI uses -g1).
+  target_compile_options(facadeslam_options INTERFACE ${_fs_san})
   target_link_options(facadeslam_options INTERFACE ${_fs_san})
 endif()
 

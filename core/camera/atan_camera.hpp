@@ -20,6 +20,8 @@
 
 #include <Eigen/Core>
 
+#include "core/camera/projection_chain.hpp"
+
 namespace facadeslam {
 
 namespace atan_detail {
@@ -79,16 +81,16 @@ struct AtanCamera {
 
   template <class T>
   Eigen::Matrix<T, 2, 1> project(const Eigen::Matrix<T, 3, 1>& p_c) const {
-    const Eigen::Matrix<T, 2, 1> xn(p_c(0) / p_c(2), p_c(1) / p_c(2));
-    const Eigen::Matrix<T, 2, 1> xd = distort(xn);
-    return {fx * xd(0) + cx, fy * xd(1) + cy};
+    return projection_chain::project(*this, p_c);
   }
 
   // Pixel -> ray on the z = 1 plane.
-  Eigen::Vector3d unproject(const Eigen::Vector2d& px) const;
+  Eigen::Vector3d unproject(const Eigen::Vector2d& px) const { return projection_chain::unproject(*this, px); }
 
   // d project / d p_c, analytic.
-  Eigen::Matrix<double, 2, 3> project_jacobian(const Eigen::Vector3d& p_c) const;
+  Eigen::Matrix<double, 2, 3> project_jacobian(const Eigen::Vector3d& p_c) const {
+    return projection_chain::project_jacobian(*this, p_c);
+  }
 };
 
 }  // namespace facadeslam

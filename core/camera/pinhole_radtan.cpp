@@ -53,20 +53,4 @@ Eigen::Vector2d PinholeRadTan::undistort(const Eigen::Vector2d& xd) const {
   return x;
 }
 
-Eigen::Vector3d PinholeRadTan::unproject(const Eigen::Vector2d& px) const {
-  const Eigen::Vector2d xd((px(0) - cx) / fx, (px(1) - cy) / fy);
-  const Eigen::Vector2d xn = undistort(xd);
-  return {xn(0), xn(1), 1.0};
-}
-
-Eigen::Matrix<double, 2, 3> PinholeRadTan::project_jacobian(const Eigen::Vector3d& p_c) const {
-  const double inv_z = 1.0 / p_c(2);
-  const Eigen::Vector2d xn(p_c(0) * inv_z, p_c(1) * inv_z);
-  Eigen::Matrix<double, 2, 3> d_xn_d_p;
-  d_xn_d_p << inv_z, 0.0, -xn(0) * inv_z,  //
-      0.0, inv_z, -xn(1) * inv_z;
-  const Eigen::Matrix2d d_px_d_xd = Eigen::Vector2d(fx, fy).asDiagonal();
-  return d_px_d_xd * distort_jacobian(xn) * d_xn_d_p;
-}
-
 }  // namespace facadeslam

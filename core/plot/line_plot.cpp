@@ -2,15 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <limits>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/plot/png_file.hpp"
 #include "core/plot/ticks.hpp"
-#include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
 
 namespace facadeslam::plot {
@@ -331,21 +329,6 @@ cv::Mat LinePlot::render() const {
   return image;
 }
 
-void LinePlot::save_png(const std::filesystem::path& path) const {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".png") fail_file(path, "expected a file name ending in .png for the plot");
-  const cv::Mat image = render();
-  write_file_atomically(path, [&](const std::filesystem::path& tmp) {
-    bool written = false;
-    try {
-      written = cv::imwrite(tmp.string(), image);
-    } catch (const cv::Exception& e) {
-      fail_file(path, "cannot write the PNG plot (" + e.err + ")");
-    }
-    if (!written) fail_file(path, "cannot write the PNG plot");
-  });
-}
+void LinePlot::save_png(const std::filesystem::path& path) const { plot::save_png(path, render()); }
 
 }  // namespace facadeslam::plot

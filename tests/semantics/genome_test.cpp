@@ -12,6 +12,8 @@
 namespace facadeslam::semantics {
 namespace {
 
+using test::error_of;
+
 using ::testing::HasSubstr;
 
 Genome random_genome(std::mt19937& rng) {
@@ -29,16 +31,6 @@ int active_in(const DescriptorParams& p, Module m) {
 
 bool active(const DescriptorParams& p, const std::string& name) {
   return p.activation.test(static_cast<std::size_t>(value_index(name).value()));
-}
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 TEST(ModuleLayout, HasFourteenModulesAnd185NamedValues) {

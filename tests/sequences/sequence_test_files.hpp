@@ -13,6 +13,7 @@
 
 #include "core/util/error.hpp"
 #include "sequences/frame_source.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace facadeslam::test {
 
@@ -56,17 +57,6 @@ inline std::vector<Frame> read_all(FrameSource& source) {
   std::vector<Frame> frames;
   while (auto frame = source.next()) frames.push_back(std::move(*frame));
   return frames;
-}
-
-// The message of the facadeslam::Error that `body` throws, or "no error".
-template <typename Body>
-std::string error_of(Body&& body) {
-  try {
-    body();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 }  // namespace facadeslam::test

@@ -4,8 +4,11 @@
 // the shared data.
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
+
+#include "core/util/error.hpp"
 
 namespace facadeslam::test {
 
@@ -30,6 +33,19 @@ class TempDir {
 };
 
 void write_text(const std::filesystem::path& path, const std::string& text);
+
+// The message of the facadeslam::Error that `body` throws; a test failure
+// (and "(no error)") when it throws none.
+template <typename Body>
+std::string error_of(Body&& body) {
+  try {
+    std::forward<Body>(body)();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected a facadeslam::Error";
+  return "(no error)";
+}
 
 }  // namespace facadeslam::test
 

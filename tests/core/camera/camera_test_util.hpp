@@ -11,6 +11,7 @@
 #include "core/camera/atan_camera.hpp"
 #include "core/camera/pinhole_radtan.hpp"
 #include "core/util/error.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace facadeslam::test {
 
@@ -65,18 +66,6 @@ inline Eigen::Vector3d random_point_in_view(std::mt19937& rng, double x_range, d
   std::uniform_real_distribution<double> nx(-x_range, x_range), ny(-y_range, y_range), depth(0.3, 30.0);
   const double z = depth(rng);
   return {nx(rng) * z, ny(rng) * z, z};
-}
-
-// Runs `f`, expects facadeslam::Error, returns its message.
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected facadeslam::Error";
-  return {};
 }
 
 }  // namespace facadeslam::test

@@ -9,20 +9,10 @@
 namespace facadeslam {
 namespace {
 
+using test::error_of;
+
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-
-// Runs `f`, expects an Error, and returns its message.
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected facadeslam::Error";
-  return {};
-}
 
 TEST(ConfigNode, ReadsValuesOfEveryType) {
   const auto c = ConfigNode::parse_string(

@@ -12,6 +12,8 @@
 namespace facadeslam {
 namespace {
 
+using test::error_of;
+
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
@@ -22,17 +24,6 @@ std::string read_file(const std::filesystem::path& p) {
 
 void write_file(const std::filesystem::path& p, const std::string& data) {
   std::ofstream(p, std::ios::binary) << data;
-}
-
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected facadeslam::Error";
-  return {};
 }
 
 bool mats_equal(const cv::Mat& a, const cv::Mat& b) {

@@ -10,20 +10,10 @@
 namespace facadeslam {
 namespace {
 
+using test::error_of;
+
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
-
-// The message of the Error that `read` throws (fails the test if none).
-template <typename F>
-std::string error_of(F&& read) {
-  try {
-    read();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an Error";
-  return {};
-}
 
 TEST(TrajectoryIo, TumRoundTripKeepsFullPrecision) {
   test::TempDir dir;

@@ -11,19 +11,12 @@
 #include "core/image/image_pyramid.hpp"
 #include "core/util/error.hpp"
 #include "tests/mapmaker/init/plane_sequence.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace facadeslam {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected facadeslam::Error";
-  return {};
-}
+using test::error_of;
 
 struct Sequence {
   Camera camera = test::plain_camera();

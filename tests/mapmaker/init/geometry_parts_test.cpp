@@ -13,21 +13,14 @@
 #include "mapmaker/init/model_scoring.hpp"
 #include "mapmaker/init/two_view_triangulation.hpp"
 #include "tests/mapmaker/init/synthetic_two_view.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace facadeslam {
 namespace {
 
-using test::kDeg;
+using test::error_of;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected facadeslam::Error";
-  return {};
-}
+using test::kDeg;
 
 // ---- model scores -------------------------------------------------------
 

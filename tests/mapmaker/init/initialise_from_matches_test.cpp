@@ -10,9 +10,12 @@
 
 #include "core/util/error.hpp"
 #include "tests/mapmaker/init/synthetic_two_view.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace facadeslam {
 namespace {
+
+using test::error_of;
 
 using test::kDeg;
 using test::SceneShape;
@@ -276,16 +279,6 @@ TEST(InitialiseFromMatches, RandomMatchesAreRefused) {
   const TwoViewResult r = initialise_from_matches(camera, m.pixels0, m.pixels1, TwoViewOptions{});
   EXPECT_EQ(r.status, InitStatus::degenerate) << r.reason;
   EXPECT_TRUE(r.points_c0.empty());
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected facadeslam::Error";
-  return {};
 }
 
 TEST(InitialiseFromMatches, MismatchedListsThrow) {

@@ -15,15 +15,7 @@
 namespace facadeslam {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected facadeslam::Error";
-  return {};
-}
+using test::error_of;
 
 struct Outcome {
   int success_frame = -1;
