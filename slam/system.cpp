@@ -64,9 +64,23 @@ FrameReport System::process(std::size_t index, double timestamp, const cv::Mat& 
                     : report.tracking.relocalised ? FrameStatus::relocalised
                                                   : FrameStatus::tracking;
     if (options_.synchronous) map_maker_.process_pending();
+    log_tracking(report);
   }
   report.total_ms = ms_since(t0);
   return report;
+}
+
+void System::log_tracking(const FrameReport& report) const {
+  if (!spdlog::should_log(spdlog::level::debug)) return;
+  const TrackingResult& t = report.tracking;
+  const SearchCounts& c = t.fine_counts;
+  spdlog::debug(
+      "frame {}: {} ({}), coarse {}/{}, fine {}/{} of {} projected (no template {}, no corner {}, zmssd {}, "
+      "sub-pixel {}, outliers {}), rms {:.2f} px, {:.2f}+{:.2f}+{:.2f}+{:.2f} ms{}",
+      report.index, to_string(report.status), to_string(t.quality), t.coarse_found, t.coarse_searched, t.fine_found,
+      t.fine_searched, c.projected, c.template_invalid, c.no_candidate, c.score_too_high, c.subpixel_failed,
+      c.outliers, t.inlier_rms_px, report.pyramid_ms, t.timings.coarse_ms, t.timings.fine_ms, t.timings.pose_ms,
+      t.keyframe_requested ? ", keyframe requested" : "");
 }
 
 FrameReport System::initialise(std::size_t index, double timestamp, const cv::Mat& colour,

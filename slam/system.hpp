@@ -57,6 +57,8 @@ class System {
  private:
   FrameReport initialise(std::size_t index, double timestamp, const cv::Mat& colour,
                          std::shared_ptr<const ImagePyramid> pyramid, FrameReport report);
+  // One debug line per tracked frame: search outcomes, quality, stage times.
+  void log_tracking(const FrameReport& report) const;
 
   Camera camera_;
   SlamOptions options_;

@@ -158,12 +158,17 @@ int choose_search_level(double warp_det, const TemplateOptions& options) {
 
 PatchTemplate make_patch_template(const PatchSource& source, const Eigen::Matrix2d& warp,
                                   const TemplateOptions& options) {
+  return make_patch_template_at_level(source, warp, choose_search_level(warp.determinant(), options), options);
+}
+
+PatchTemplate make_patch_template_at_level(const PatchSource& source, const Eigen::Matrix2d& warp, int search_level,
+                                           const TemplateOptions& options) {
   if (!source.pyramid) throw Error("make_patch_template: the map point's source pyramid is missing");
   PatchTemplate t;
   t.warp = warp;
   t.warp_det = warp.determinant();
-  t.search_level = choose_search_level(t.warp_det, options);
-  if (t.search_level < 0) {
+  t.search_level = search_level;
+  if (t.search_level < 0 || t.search_level >= kPyramidLevels) {
     t.status = TemplateStatus::kBadWarp;
     return t;
   }

@@ -59,6 +59,15 @@ int choose_search_level(double warp_det, const TemplateOptions& options = {});
 PatchTemplate make_patch_template(const PatchSource& source, const Eigen::Matrix2d& warp,
                                   const TemplateOptions& options = {});
 
+// The same when the caller already chose the search level with
+// choose_search_level(warp.determinant(), options) (the tracker does, to pick
+// its coarse-stage points): the rule is applied once. A negative level gives
+// a kBadWarp template.
+// (A distinct name, not an overload: `make_patch_template(source, warp, {})`
+// must keep meaning default options, not level 0.)
+PatchTemplate make_patch_template_at_level(const PatchSource& source, const Eigen::Matrix2d& warp, int search_level,
+                                           const TemplateOptions& options = {});
+
 // Everything from the point, the current pose and the current (level-0) camera.
 PatchTemplate make_patch_template(const PatchSource& source, const PointGeometry& geometry, const SE3d& T_c_w,
                                   const Camera& camera, const TemplateOptions& options = {});

@@ -68,10 +68,15 @@ std::vector<std::shared_ptr<MapPoint>> epipolar_new_points(Map& map, const Camer
     const auto& new_level = newest.pyramid()->level(level);
     const auto& other_level = other.pyramid()->level(level);
 
-    // Existing measurements at this level of the new keyframe, to keep away from.
+    // Existing measurements of the new keyframe at this level or the next
+    // coarser one, to keep away from (PTAM's ThinCandidates). Finer
+    // measurements must not count: a few hundred level-0 points, each
+    // blocking min_distance level pixels (8 level-0 pixels at level 1, 32 at
+    // level 3), would cover the coarse levels entirely, leaving the map
+    // without the coarse points the tracker's coarse stage searches.
     std::vector<Eigen::Vector2d> taken;
     for (const auto& [id, m] : newest.measurements())
-      taken.push_back(ImagePyramid::level0_to_level(m.pixel, level));
+      if (m.level == level || m.level == level + 1) taken.push_back(ImagePyramid::level0_to_level(m.pixel, level));
 
     std::vector<Corner> corners = new_level.corners;
     std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.score > b.score; });
@@ -143,6 +148,7 @@ std::vector<std::shared_ptr<MapPoint>> epipolar_new_points(Map& map, const Camer
       taken.push_back(at);
       created.push_back(std::move(point));
       ++local.triangulated;
+      ++local.triangulated_per_level[static_cast<std::size_t>(level)];
     }
   }
   if (stats) *stats = local;

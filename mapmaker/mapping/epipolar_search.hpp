@@ -10,6 +10,7 @@
 //
 // Map maker thread only: it reads keyframe measurements and poses (poses
 // under the map's shared lock, taken inside).
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -23,6 +24,7 @@ struct EpipolarSearchStats {
   int candidates = 0;    // corners tried
   int matched = 0;       // a patch match was found
   int triangulated = 0;  // kept as new points
+  std::array<int, kPyramidLevels> triangulated_per_level{};  // ... by source level
 };
 
 // Creates points with their source in `newest` and measurements in both

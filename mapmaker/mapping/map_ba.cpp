@@ -76,7 +76,11 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
     problem.keyframes.front().fixed = true;
 
   report.ba = adjuster.solve(problem, camera);
-  if (report.ba.aborted) return report;
+  // An aborted solve still leaves the last accepted iterate in `problem`
+  // (never worse than the input, bundle_adjuster.hpp): publish it, so the
+  // iterations done before a new keyframe interrupted a global BA are kept.
+  // Only a solve aborted before its first iteration has nothing to publish.
+  if (report.ba.aborted && report.ba.iterations == 0) return report;
 
   // Outlier measurements leave their keyframes (map maker thread owns them).
   for (const std::size_t o : report.ba.outliers) {

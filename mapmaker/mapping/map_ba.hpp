@@ -3,7 +3,8 @@
 // part into a BaProblem under the map's shared lock, solves without any lock
 // (the tracker keeps running), then writes poses and positions back under an
 // exclusive lock held only for the copy. Outlier measurements (except a point's
-// source measurement) are dropped from their keyframes.
+// source measurement) are dropped from their keyframes. An aborted solve
+// publishes its last accepted iterate too (report.ba.aborted says so).
 //
 // Map maker thread only (it owns keyframe measurements).
 #include <optional>

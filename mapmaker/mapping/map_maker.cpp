@@ -133,9 +133,12 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
     EpipolarSearchStats es;
     created = epipolar_new_points(map_, camera_, *kf, *other, options_.epipolar, &es);
     map_.add({}, created);
-    spdlog::debug("keyframe {} (frame {}): {} tracked, epipolar search with keyframe {}: {} tried, {} matched, {} new",
-                  kf->id(), candidate.frame_index, candidate.measurements.size(), other->id(), es.candidates,
-                  es.matched, es.triangulated);
+    const auto& by_level = es.triangulated_per_level;
+    spdlog::debug(
+        "keyframe {} (frame {}): {} tracked, epipolar search with keyframe {}: {} tried, {} matched, {} new "
+        "(levels 0-3: {} {} {} {})",
+        kf->id(), candidate.frame_index, candidate.measurements.size(), other->id(), es.candidates, es.matched,
+        es.triangulated, by_level[0], by_level[1], by_level[2], by_level[3]);
   }
 
   const MapBaReport ba =

@@ -84,20 +84,32 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
 
 std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>& points,
                                                 const std::vector<Candidate>& candidates,
-                                                const ImagePyramid& pyramid, double radius_level0, int max_points,
-                                                int& searched) const {
+                                                const tracker::SearchImage& image, double radius_level0,
+                                                int max_points, int& searched, SearchCounts* counts) const {
   std::vector<TrackedMeasurement> found;
+  found.reserve(static_cast<std::size_t>(std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(max_points))));
   searched = 0;
   for (const auto& c : candidates) {
     if (searched >= max_points) break;
     const auto& point = points[c.point].point;
-    const tracker::PatchTemplate tpl = tracker::make_patch_template(point->source(), c.warp, options_.templates);
-    if (!tpl.valid()) continue;
+    // project_map chose the level; the template uses it as it is.
+    const tracker::PatchTemplate tpl =
+        tracker::make_patch_template_at_level(point->source(), c.warp, c.search_level, options_.templates);
+    if (!tpl.valid()) {
+      if (counts) ++counts->template_invalid;
+      continue;
+    }
     ++searched;
-    const double radius = std::max(2.0, radius_level0 / static_cast<double>(1 << tpl.search_level));
-    const tracker::PatchSearchResult r = tracker::search_patch(tpl, pyramid, c.pixel, radius, options_.search);
+    const double radius = std::max(2.0, radius_level0 / ImagePyramid::level_scale(tpl.search_level));
+    const tracker::PatchSearchResult r = tracker::search_patch(tpl, image, c.pixel, radius, options_.search);
     point->count_search(r.found());
-    if (r.found()) found.push_back({point, r.level, r.pixel_level0});
+    if (r.found()) {
+      found.push_back({point, r.level, r.pixel_level0});
+    } else if (counts) {
+      counts->no_candidate += r.outcome == tracker::SearchOutcome::kNoCandidate;
+      counts->score_too_high += r.outcome == tracker::SearchOutcome::kScoreTooHigh;
+      counts->subpixel_failed += r.outcome == tracker::SearchOutcome::kSubpixelFailed;
+    }
   }
   return found;
 }
@@ -122,6 +134,8 @@ std::vector<tracker::PoseMeasurement> to_pose_measurements(const std::vector<Poi
 std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const TrackerInput& frame,
                                                     TrackingResult& result) {
   const std::vector<PointSnapshot> points = map_.snapshot_points();
+  // One row index of the frame's corners, shared by every search of both stages.
+  const tracker::SearchImage image(*frame.pyramid);
   std::mt19937_64 rng(options_.seed * 0x9E3779B97F4A7C15ULL + frame.index);
   SE3d T_c_w = T_start;
   double fine_radius = options_.fine_radius;
@@ -132,8 +146,8 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const T
     std::vector<Candidate> candidates = project_map(points, T_c_w);
     std::erase_if(candidates, [&](const Candidate& c) { return c.search_level < options_.coarse_min_level; });
     std::shuffle(candidates.begin(), candidates.end(), rng);
-    const auto found = search(points, candidates, *frame.pyramid, options_.coarse_radius, options_.coarse_max_points,
-                              result.coarse_searched);
+    const auto found = search(points, candidates, image, options_.coarse_radius, options_.coarse_max_points,
+                              result.coarse_searched, nullptr);
     result.coarse_found = static_cast<int>(found.size());
     result.timings.coarse_ms = ms_since(t0);
     if (result.coarse_found >= options_.coarse_min_found) {
@@ -152,8 +166,9 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const T
   const auto t0 = Clock::now();
   std::vector<Candidate> candidates = project_map(points, T_c_w);
   std::shuffle(candidates.begin(), candidates.end(), rng);
-  std::vector<TrackedMeasurement> found =
-      search(points, candidates, *frame.pyramid, fine_radius, options_.fine_max_points, result.fine_searched);
+  result.fine_counts.projected = static_cast<int>(candidates.size());
+  std::vector<TrackedMeasurement> found = search(points, candidates, image, fine_radius, options_.fine_max_points,
+                                                 result.fine_searched, &result.fine_counts);
   result.timings.fine_ms = ms_since(t0);
 
   const auto t1 = Clock::now();
@@ -170,6 +185,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const T
   }
   result.timings.pose_ms += ms_since(t1);
   result.fine_found = static_cast<int>(inliers.size());
+  result.fine_counts.outliers = static_cast<int>(found.size() - inliers.size());
   result.T_c_w = T_c_w;
 
   const double ratio =
@@ -220,12 +236,18 @@ TrackingResult Tracker::track(const TrackerInput& frame) {
   const SE3d predicted = SE3d::exp(options_.velocity_decay * velocity_) * T_c_w_;
   auto inliers = track_from(predicted, frame, result);
   if (result.quality == TrackingQuality::bad) {
+    // PTAM: the next few frames are still tracked from the motion model (a
+    // blurred or briefly occluded frame says little about where the camera
+    // went), and only then does relocalisation take over. The bad frame's
+    // own pose update is not trusted.
     ++lost_frames_;
-    velocity_.setZero();
+    T_c_w_ = predicted;
+    velocity_ *= options_.velocity_decay;
     return result;
   }
   velocity_ = (result.T_c_w * T_c_w_.inverse()).log();
   T_c_w_ = result.T_c_w;
+  lost_frames_ = 0;
   result.tracked = true;
 
   if (wants_keyframe(result, frame.index)) {

@@ -17,6 +17,7 @@
 #include "core/lie/se3.hpp"
 #include "core/map/keyframe_queue.hpp"
 #include "core/map/map.hpp"
+#include "tracker/search_image.hpp"
 #include "tracker/tracking/tracker_options.hpp"
 
 namespace facadeslam {
@@ -36,6 +37,16 @@ struct StageTimings {
   double coarse_ms = 0, fine_ms = 0, pose_ms = 0, relocalise_ms = 0;
 };
 
+// Why the fine stage's searches failed (diagnostics, --verbose).
+struct SearchCounts {
+  int projected = 0;         // map points projecting into the image with a usable warp
+  int template_invalid = 0;  // no template (outside the source image, textureless)
+  int no_candidate = 0;      // no FAST corner within the radius
+  int score_too_high = 0;    // best corner's ZMSSD above the bound
+  int subpixel_failed = 0;   // sub-pixel refinement did not converge
+  int outliers = 0;          // found, then rejected by the robust pose update
+};
+
 struct TrackingResult {
   bool tracked = false;        // pose is valid for this frame
   TrackingQuality quality = TrackingQuality::bad;
@@ -45,6 +56,7 @@ struct TrackingResult {
   int coarse_searched = 0, coarse_found = 0;
   int fine_searched = 0, fine_found = 0;
   double inlier_rms_px = 0;
+  SearchCounts fine_counts;
   StageTimings timings;
 };
 
@@ -71,11 +83,13 @@ class Tracker {
   struct Candidate;  // a projected map point (tracker.cpp)
 
   std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w) const;
-  // Searches up to `max_points` of `candidates` (in order) and returns the
-  // measurements found; `searched` counts the attempts.
+  // Searches up to `max_points` of `candidates` (in order) in the frame's
+  // search image and returns the measurements found; `searched` counts the
+  // attempts, `counts` (optional) why the others failed.
   std::vector<TrackedMeasurement> search(const std::vector<PointSnapshot>& points,
-                                         const std::vector<Candidate>& candidates, const ImagePyramid& pyramid,
-                                         double radius_level0, int max_points, int& searched) const;
+                                         const std::vector<Candidate>& candidates,
+                                         const tracker::SearchImage& image, double radius_level0, int max_points,
+                                         int& searched, SearchCounts* counts) const;
   // The coarse + fine stages and pose updates from `T_start`; fills `result`.
   std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const TrackerInput& frame,
                                              TrackingResult& result);

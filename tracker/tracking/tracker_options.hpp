@@ -38,7 +38,9 @@ struct TrackerOptions {
   double quality_good = 0.3;
   double quality_lost = 0.13;
   int min_found = 20;             // fewer points found is a failure whatever the ratio
-  int lost_frames_before_relocalising = 1;
+  // Bad frames in a row still tracked from the motion model before the
+  // relocaliser takes over (PTAM's NUM_LOST_FRAMES).
+  int lost_frames_before_relocalising = 3;
 
   // Keyframes: only when tracking is good, enough frames have passed, and
   // the camera is far enough from every keyframe relative to scene depth.

@@ -1,0 +1,91 @@
+// configs/slam.yaml: the shipped file holds the defaults, and every mistake in
+// a user's file (unknown key, value out of range, inconsistent thresholds) is
+// an Error naming the file and the key.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/util/error.hpp"
+#include "slam/slam_options.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace facadeslam {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+std::string load_error(const std::string& yaml) {
+  test::TempDir dir;
+  const auto path = dir / "slam.yaml";
+  test::write_text(path, yaml);
+  try {
+    load_slam_options(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error for:\n" << yaml;
+  return {};
+}
+
+TEST(SlamOptions, ShippedConfigHoldsTheDefaults) {
+  const SlamOptions loaded = load_slam_options(test::source_dir() / "configs" / "slam.yaml");
+  const SlamOptions defaults;
+  const TrackerOptions &t = loaded.tracker, &d = defaults.tracker;
+  for (int l = 0; l < kPyramidLevels; ++l)
+    EXPECT_EQ(t.pyramid.fast[static_cast<std::size_t>(l)].threshold,
+              d.pyramid.fast[static_cast<std::size_t>(l)].threshold);
+  EXPECT_EQ(t.coarse_stage, d.coarse_stage);
+  EXPECT_EQ(t.coarse_max_points, d.coarse_max_points);
+  EXPECT_DOUBLE_EQ(t.coarse_radius, d.coarse_radius);
+  EXPECT_EQ(t.fine_max_points, d.fine_max_points);
+  EXPECT_DOUBLE_EQ(t.fine_radius, d.fine_radius);
+  EXPECT_DOUBLE_EQ(t.fine_radius_after_coarse, d.fine_radius_after_coarse);
+  EXPECT_DOUBLE_EQ(t.velocity_decay, d.velocity_decay);
+  EXPECT_DOUBLE_EQ(t.quality_good, d.quality_good);
+  EXPECT_DOUBLE_EQ(t.quality_lost, d.quality_lost);
+  EXPECT_EQ(t.min_found, d.min_found);
+  EXPECT_EQ(t.keyframe_min_frames, d.keyframe_min_frames);
+  EXPECT_DOUBLE_EQ(t.keyframe_min_distance, d.keyframe_min_distance);
+  EXPECT_FLOAT_EQ(t.search.max_zmssd_per_pixel, d.search.max_zmssd_per_pixel);
+  EXPECT_EQ(t.seed, d.seed);
+  const MapMakerOptions &m = loaded.mapmaker, &md = defaults.mapmaker;
+  EXPECT_DOUBLE_EQ(m.initialisation.min_median_parallax_deg, md.initialisation.min_median_parallax_deg);
+  EXPECT_EQ(m.initialisation.min_points, md.initialisation.min_points);
+  EXPECT_EQ(m.local_ba_selection.neighbours, md.local_ba_selection.neighbours);
+  EXPECT_EQ(m.local_ba.max_iterations, md.local_ba.max_iterations);
+  EXPECT_EQ(m.global_ba.max_iterations, md.global_ba.max_iterations);
+  EXPECT_EQ(m.sync_global_ba_every, md.sync_global_ba_every);
+  EXPECT_FLOAT_EQ(m.epipolar.max_zmssd_per_pixel, md.epipolar.max_zmssd_per_pixel);
+  EXPECT_EQ(m.outlier_min_searches, md.outlier_min_searches);
+  EXPECT_DOUBLE_EQ(m.outlier_max_found_ratio, md.outlier_max_found_ratio);
+}
+
+TEST(SlamOptions, ReadsGivenValues) {
+  test::TempDir dir;
+  test::write_text(dir / "slam.yaml",
+                   "tracker:\n  fine_max_points: 500\n  fast_thresholds: {level2: 12}\n"
+                   "mapmaker:\n  local_ba_neighbours: 3\n");
+  const SlamOptions o = load_slam_options(dir / "slam.yaml");
+  EXPECT_EQ(o.tracker.fine_max_points, 500);
+  EXPECT_EQ(o.tracker.pyramid.fast[2].threshold, 12);
+  EXPECT_EQ(o.tracker.pyramid.fast[0].threshold, SlamOptions{}.tracker.pyramid.fast[0].threshold);
+  EXPECT_EQ(o.mapmaker.local_ba_selection.neighbours, 3u);
+}
+
+TEST(SlamOptions, RejectsUnknownKeysAtEveryLevel) {
+  EXPECT_THAT(load_error("tracker:\n  fine_radius: 8\n"), AllOf(HasSubstr("slam.yaml"), HasSubstr("fine_radius")));
+  EXPECT_THAT(load_error("mapmaker:\n  local_ba_neighbors: 4\n"), HasSubstr("local_ba_neighbors"));
+  EXPECT_THAT(load_error("tracker:\n  fast_thresholds: {level4: 5}\n"), HasSubstr("level4"));
+  EXPECT_THAT(load_error("semantic:\n  x: 1\n"), HasSubstr("semantic"));
+}
+
+TEST(SlamOptions, RejectsBadValues) {
+  EXPECT_THAT(load_error("tracker:\n  quality_good: 1.5\n"), HasSubstr("quality_good"));
+  EXPECT_THAT(load_error("tracker:\n  fine_max_points: many\n"), HasSubstr("fine_max_points"));
+  EXPECT_THAT(load_error("tracker:\n  fast_thresholds: {level0: 0}\n"), HasSubstr("level0"));
+  EXPECT_THAT(load_error("tracker:\n  quality_good: 0.2\n  quality_lost: 0.3\n"), HasSubstr("quality_lost"));
+  EXPECT_THAT(load_error("mapmaker:\n  outlier_max_found_ratio: -0.1\n"), HasSubstr("outlier_max_found_ratio"));
+}
+
+}  // namespace
+}  // namespace facadeslam

@@ -1,0 +1,63 @@
+// The System in synchronous mode on the first 1.5 s of the demo street (a
+// sideways pan; the photos are committed, so this runs on a fresh clone):
+// it initialises by itself, then tracks every following frame.
+#include <gtest/gtest.h>
+
+#include "tests/slam/slam_test_run.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace facadeslam {
+namespace {
+
+TEST(System, InitialisesOnAShortPanAndTracksTheFramesAfter) {
+  test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 45);
+  System system(scene.camera(), test::synchronous_options());
+  test::SlamRunLog log;
+  test::run_frames(system, scene, 0, scene.size(), log);
+  system.finish();
+
+  ASSERT_TRUE(system.initialised());
+  const int init = log.initialised_at();
+  EXPECT_GT(init, 0);
+  EXPECT_LT(init, 35);
+  for (const FrameReport& f : log.frames) {
+    if (static_cast<int>(f.index) < init) {
+      EXPECT_EQ(f.status, FrameStatus::initialising) << "frame " << f.index;
+      EXPECT_FALSE(f.has_pose);
+    } else {
+      EXPECT_TRUE(f.has_pose) << "frame " << f.index << ": " << to_string(f.status);
+    }
+  }
+  EXPECT_GE(system.map().keyframe_count(), 2u);
+  EXPECT_GE(system.map().point_count(), 50u);
+  // The reference frame is the first keyframe, at the origin; the poses
+  // follow the true path up to scale.
+  ASSERT_GE(log.estimate.size(), 3u);
+  const TrajectoryEvaluation ate = test::evaluate(scene, log.estimate);
+  EXPECT_LT(ate.ate_rmse_m, 0.01) << "path " << ate.path_length_m << " m";
+}
+
+TEST(System, SameInputGivesTheSameResultBitForBit) {
+  test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 35);
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < scene.size(); ++i) frames.push_back(scene.render(i));
+  const auto run = [&] {
+    System system(scene.camera(), test::synchronous_options());
+    std::vector<SE3d> poses;
+    for (int i = 0; i < scene.size(); ++i) {
+      const FrameReport r = system.process(static_cast<std::size_t>(i), scene.timestamp(i), frames[static_cast<std::size_t>(i)]);
+      if (r.has_pose) poses.push_back(r.T_c_w);
+    }
+    return poses;
+  };
+  const auto a = run(), b = run();
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].translation(), b[i].translation()) << i;
+    EXPECT_EQ(a[i].rotation_matrix(), b[i].rotation_matrix()) << i;
+  }
+}
+
+}  // namespace
+}  // namespace facadeslam
