@@ -1,3 +1,4 @@
+#include "apps/cmd_evaluate_labels.hpp"
 #include "apps/cmd_evaluate_trajectory.hpp"
 #include "apps/commands.hpp"
 
@@ -7,6 +8,7 @@ void add_evaluate_command(CLI::App& app) {
   auto* evaluate = app.add_subcommand("evaluate", "Evaluate trajectories and labels against ground truth");
   evaluate->require_subcommand(1);
   add_evaluate_trajectory_command(*evaluate);
+  add_evaluate_labels_command(*evaluate);
 }
 
 }  // namespace facadeslam::apps

@@ -1,0 +1,128 @@
+#include "apps/cmd_evaluate_labels.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+#include "core/util/error.hpp"
+#include "core/util/json.hpp"
+#include "semantics/descriptor/genome_io.hpp"
+#include "semantics/evaluation/confusion_plot.hpp"
+#include "semantics/evaluation/label_evaluation.hpp"
+#include "semantics/forest/forest_model.hpp"
+#include "semantics/point_descriptors/point_descriptor.hpp"
+
+namespace facadeslam::apps {
+namespace {
+
+using semantics::Genome;
+
+struct Options {
+  semantics::LabelEvaluationOptions evaluation;
+  std::string genome;  // text, file or empty (thesis genome)
+  std::filesystem::path json, confusion;
+};
+
+// --genome takes a genome file (0/1 text or .json) or the 211-character
+// 0/1 string itself.
+Genome resolve_genome(const std::string& value) {
+  if (value.empty()) return Genome::thesis_best();
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(value, ec)) return semantics::load_genome(value);
+  bool bits_only = true;
+  for (const char c : value) bits_only = bits_only && (c == '0' || c == '1' || std::isspace(static_cast<unsigned char>(c)));
+  // A genome string with a typo still gets Genome::parse's precise message.
+  if (bits_only || value.size() == static_cast<std::size_t>(Genome::kBits)) return Genome::parse(value, "--genome");
+  std::string shown = value.substr(0, 40);
+  if (value.size() > 40) shown.append("...");
+  std::string message = "--genome: '";
+  message.append(shown).append("' is neither a genome file nor a 211-character 0/1 string");
+  throw Error(message);
+}
+
+std::string percent(double v) {
+  if (!std::isfinite(v)) return "   -  ";
+  char text[32];
+  std::snprintf(text, sizeof text, "%6.2f", 100.0 * v);
+  return text;
+}
+
+void print_summary(const semantics::LabelEvaluation& r) {
+  std::printf("label evaluation: %s (%d values), %zu training / %zu test images, %zu training rows, %zu test keypoints\n",
+              r.descriptor.c_str(), r.descriptor_width, r.train_images, r.test_images, r.train_samples,
+              r.test_keypoints);
+  std::printf("  overall recognition rate  %s %%\n", percent(r.confusion.overall_recognition_rate()).c_str());
+  std::printf("  average recognition rate  %s %%\n", percent(r.confusion.average_recognition_rate()).c_str());
+  std::printf("  %-12s %8s %9s %8s %10s\n", "class", "recall", "precision", "f1", "keypoints");
+  const auto names = semantics::evaluation_class_names();
+  for (int k = 0; k < r.confusion.classes(); ++k) {
+    const semantics::ClassMetrics m = r.confusion.metrics(k);
+    std::printf("  %-12s %8s %9s %8s %10llu\n", names[static_cast<std::size_t>(k)].c_str(), percent(m.recall).c_str(),
+                percent(m.precision).c_str(), percent(m.f1).c_str(),
+                static_cast<unsigned long long>(r.confusion.truth_count(k)));
+  }
+  std::printf("  extraction %.1f ms/image, forest %.1f ms/image, training %.1f s, total %.1f s\n",
+              r.extraction_ms_per_image(), r.forest_ms_per_image(), r.training_seconds, r.total_seconds);
+  std::fflush(stdout);
+}
+
+void run(Options& o) {
+  o.evaluation.genome = resolve_genome(o.genome);
+  // Output names are checked now, not after an hour of training.
+  if (!o.confusion.empty() && o.confusion.extension() != ".png")
+    fail_file(o.confusion, "expected a file name ending in .png for the confusion matrix");
+  if (!o.evaluation.model_out.empty()) semantics::require_model_file_name(o.evaluation.model_out);
+  const semantics::LabelEvaluation result = semantics::evaluate_labels(o.evaluation);
+  print_summary(result);
+  if (!o.json.empty()) {
+    write_json(o.json, semantics::to_json(result, o.evaluation));
+    spdlog::info("wrote {}", o.json.string());
+  }
+  if (!o.confusion.empty()) {
+    char title[200];
+    std::snprintf(title, sizeof title, "%s: overall %.1f %%, average %.1f %% (%zu test images)", result.descriptor.c_str(),
+                  100.0 * result.confusion.overall_recognition_rate(),
+                  100.0 * result.confusion.average_recognition_rate(), result.test_images);
+    semantics::save_confusion_matrix_png(o.confusion, result.confusion, semantics::evaluation_class_names(), title);
+    spdlog::info("wrote {}", o.confusion.string());
+  }
+}
+
+}  // namespace
+
+void add_evaluate_labels_command(CLI::App& evaluate) {
+  auto options = std::make_shared<Options>();
+  auto& e = options->evaluation;
+  auto* cmd = evaluate.add_subcommand(
+      "labels", "Train a random forest on a LabelMeFacade-style dataset's train.txt and report keypoint labelling on test.txt");
+  cmd->add_option("--dataset", e.dataset, "Dataset folder: train.txt, test.txt, images/, labels/")->required();
+  std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames), std::end(semantics::kPointDescriptorNames));
+  cmd->add_option("--descriptor", e.descriptor, "Descriptor to evaluate")
+      ->check(CLI::IsMember(names))
+      ->capture_default_str();
+  cmd->add_option("--genome", options->genome,
+                  "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the 211-character "
+                  "0/1 string (default: the thesis' best genome)");
+  cmd->add_option("--step", e.step, "Grid step in pixels")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_flag("--balance", e.balance,
+                "Class-balanced training sample: every class sampled to the median class size (rare classes "
+                "oversampled, common ones subsampled)");
+  cmd->add_option("--max-train", e.max_train_images, "Use only the first N images of train.txt (0 = all)")
+      ->capture_default_str();
+  cmd->add_option("--max-test", e.max_test_images, "Use only the first N images of test.txt (0 = all)")
+      ->capture_default_str();
+  cmd->add_option("--max-samples", e.max_samples, "At most N training keypoints, drawn at random (0 = all)")
+      ->capture_default_str();
+  cmd->add_option("--seed", e.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
+  cmd->add_option("--json", options->json, "Write the report to this JSON file");
+  cmd->add_option("--confusion", options->confusion, "Write the confusion matrix to this PNG");
+  cmd->add_option("--model-out", e.model_out, "Save the trained forest (e.g. model.yml.gz)");
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace facadeslam::apps

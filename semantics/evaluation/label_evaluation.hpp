@@ -1,0 +1,68 @@
+#pragma once
+// The labelling evaluation of thesis IV.5 on a LabelMeFacade-layout
+// dataset: grid keypoints on every image, ground truth from the colour
+// labels, a random forest trained on the training images' descriptors and
+// tested on the test images' (`facadeslam evaluate labels`).
+//
+// Keypoints whose label colour is no class colour are skipped and counted
+// (unlabelled_keypoints); every descriptor sees exactly the same keypoints.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/util/json.hpp"
+#include "semantics/descriptor/genome.hpp"
+#include "semantics/evaluation/confusion_matrix.hpp"
+#include "semantics/evaluation/grid_keypoints.hpp"
+#include "semantics/forest/forest_params.hpp"
+
+namespace facadeslam::semantics {
+
+struct LabelEvaluationOptions {
+  std::filesystem::path dataset;
+  std::string descriptor = "modular";  // a kPointDescriptorNames entry
+  Genome genome = Genome::thesis_best();
+  int step = kDefaultGridStep;
+  bool balance = false;                 // training_sample.hpp
+  std::size_t max_train_images = 0;     // first N of train.txt; 0 = all
+  std::size_t max_test_images = 0;      // first N of test.txt; 0 = all
+  std::size_t max_samples = 0;          // training keypoints cap; 0 = all
+  std::uint64_t seed = 1;               // training-sample draw and forest
+  std::filesystem::path model_out;      // save the trained forest here when set
+};
+
+struct LabelEvaluation {
+  std::string descriptor;
+  int descriptor_width = 0;
+  ForestParams forest;
+  std::size_t train_images = 0, test_images = 0;
+  std::size_t train_keypoints = 0;      // labelled grid keypoints of the training images
+  std::size_t train_samples = 0;        // rows the forest was trained on
+  std::vector<std::size_t> train_keypoints_per_class, train_samples_per_class;
+  std::size_t test_keypoints = 0;       // labelled grid keypoints of the test images
+  std::size_t unlabelled_keypoints = 0; // skipped (colour of no class), train + test
+  ConfusionMatrix confusion{1};
+  double train_extraction_seconds = 0, training_seconds = 0;
+  double test_extraction_seconds = 0, forest_seconds = 0, total_seconds = 0;
+
+  double extraction_ms_per_image() const;  // test images, all their keypoints
+  double forest_ms_per_image() const;
+};
+
+// Runs the whole evaluation. Bad input (missing folder or list, an image
+// without label, a label of another size, an unknown descriptor, ...) is an
+// Error naming the file; checked before the long work starts where possible.
+// Shows a progress bar on a terminal (core/util/progress.hpp).
+LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options);
+
+// The report: options, counts, overall and average recognition rate,
+// per-class tp fp fn tn accuracy precision recall specificity npv f1,
+// the confusion matrix and the timings.
+Json to_json(const LabelEvaluation& result, const LabelEvaluationOptions& options);
+
+// Class names in id order (LabelMeFacade's nine).
+std::vector<std::string> evaluation_class_names();
+
+}  // namespace facadeslam::semantics
