@@ -11,7 +11,17 @@ elseif(FACADESLAM_SANITIZE STREQUAL "thread")
 elseif(NOT FACADESLAM_SANITIZE STREQUAL "")
   message(FATAL_ERROR "FACADESLAM_SANITIZE must be empty, 'address' or 'thread', not '${FACADESLAM_SANITIZE}'")
 endif()
+if(FACADESLAM_SANITIZE STREQUAL "address")
+  # Eigen stops trusting malloc's 16-byte alignment when it sees ASan
+  # (__SANITIZE_ADDRESS__) and frees through its own aligned header, while the
+  # uninstrumented libceres allocates with plain malloc: a Ceres-allocated
+  # matrix freed in our code (e.g. ceres::GradientChecker's results) is then a
+  # bad free. Both sides must agree; ASan's malloc does return 16-byte
+  # aligned blocks on x86-64, which libceres already relies on.
+  list(APPEND _fs_san_defs EIGEN_MALLOC_ALREADY_ALIGNED=1)
+endif()
 if(_fs_san)
+  target_compile_definitions(facadeslam_options INTERFACE ${_fs_san_defs})
   # No -g here: the build type chooses the debug information (CI uses -g1).
   target_compile_options(facadeslam_options INTERFACE ${_fs_san})
   target_link_options(facadeslam_options INTERFACE ${_fs_san})
