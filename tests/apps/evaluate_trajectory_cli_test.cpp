@@ -3,17 +3,15 @@
 // error messages.
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
-
-#include <sys/wait.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "tests/apps/cli_run.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace facadeslam {
@@ -21,39 +19,11 @@ namespace {
 
 using ::testing::HasSubstr;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-// For the shell. Built by appending: GCC 12 warns falsely on "'" + s.
-std::string quoted(const std::string& s) {
-  std::string q;
-  q.reserve(s.size() + 2);
-  q.append(1, '\'').append(s).append(1, '\'');
-  return q;
-}
+std::string quoted(const std::string& s) { return test::shell_quoted(s); }
 
 class EvaluateTrajectoryCli : public ::testing::Test {
  protected:
-  RunResult run(const std::string& arguments) {
-    const auto out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = quoted(FACADESLAM_BINARY) + " " + arguments + " > " + quoted(out.string()) +
-                                " 2> " + quoted(err.string()) + " < /dev/null";
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_all(out);
-    result.err = read_all(err);
-    return result;
-  }
+  test::CliResult run(const std::string& arguments) { return test::run_cli(FACADESLAM_BINARY, arguments, dir_.path()); }
 
   // A rising helix (with rotations) as TUM; the estimate is the same motion
   // at half the scale, shifted, with timestamps 3 ms late.
@@ -111,7 +81,7 @@ TEST_F(EvaluateTrajectoryCli, WritesTableJsonAndPlot) {
   EXPECT_THAT(r.out, HasSubstr("RPE rotation RMSE"));
   EXPECT_EQ(r.err, "");
 
-  const std::string report = read_all(json);
+  const std::string report = test::read_file_text(json);
   for (const char* key : {"pairs", "scale", "ate_rmse_m", "ate_mean_m", "ate_median_m", "ate_max_m",
                           "rpe_trans_rmse_m", "rpe_rot_rmse_deg", "path_length_m", "ate_percent_of_path"})
     EXPECT_THAT(report, HasSubstr(json_key(key))) << key;
@@ -132,7 +102,7 @@ TEST_F(EvaluateTrajectoryCli, BundledFr1XyzMatchesTheReference) {
                      " --est " + quoted((data / "freiburg1_xyz-ORB_kf_mono.txt").string()) + " --json " +
                      quoted(json.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string report = read_all(json);
+  const std::string report = test::read_file_text(json);
   EXPECT_EQ(json_number(report, "pairs"), 32.0);
   EXPECT_NEAR(json_number(report, "scale"), 1.1056, 1e-4);
   EXPECT_NEAR(json_number(report, "ate_rmse_m"), 0.00975, 1e-4);
@@ -143,7 +113,7 @@ TEST_F(EvaluateTrajectoryCli, Se3KeepsTheScaleError) {
   const auto json = dir_ / "eval.json";
   const auto r = run("-q evaluate trajectory " + inputs() + " --align se3 --rpe-delta 2 --json " + quoted(json.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string report = read_all(json);
+  const std::string report = test::read_file_text(json);
   EXPECT_EQ(json_number(report, "scale"), 1.0);
   EXPECT_GT(json_number(report, "ate_rmse_m"), 0.1);
   EXPECT_EQ(json_number(report, "rpe_delta"), 2.0);
