@@ -60,8 +60,11 @@ if(FACADESLAM_BUILD_TESTS)
   endif()
 endif()
 
+#
+# FIXTURES names CTest fixtures every discovered test requires (e.g. a
+# set-up test that clears a cache shared by the test processes).
 function(facadeslam_test name)
-  cmake_parse_arguments(ARG "" "LABEL" "SOURCES;DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "LABEL" "SOURCES;DEPS;FIXTURES" ${ARGN})
   if(NOT ARG_LABEL)
     set(ARG_LABEL unit)
   endif()
@@ -74,7 +77,8 @@ function(facadeslam_test name)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
     DISCOVERY_MODE PRE_TEST
-    PROPERTIES ENVIRONMENT "FACADESLAM_SOURCE_DIR=${PROJECT_SOURCE_DIR}" LABELS ${ARG_LABEL})
+    PROPERTIES ENVIRONMENT "FACADESLAM_SOURCE_DIR=${PROJECT_SOURCE_DIR}" LABELS ${ARG_LABEL}
+               FIXTURES_REQUIRED "${ARG_FIXTURES}")
 endfunction()
 
 # facadeslam_bench(NAME SOURCES ... DEPS ...): one Google Benchmark program.

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/util/atomic_write.hpp"
 #include "tests/calib/synthetic_board.hpp"
 
 namespace facadeslam::test {
@@ -30,11 +31,47 @@ Camera true_atan() { return Camera(640, 480, AtanCamera{.fx = 410.0, .fy = 408.0
 
 std::vector<SE3d> scene_poses(const Camera& camera) { return varied_board_poses(camera, test_board(), 10); }
 
+namespace {
+
+std::filesystem::path cached_view_path(const Camera& camera, std::size_t view) {
+  char name[32];
+  std::snprintf(name, sizeof name, "view_%02zu.png", view);
+  return std::filesystem::path(FACADESLAM_CALIB_RENDER_CACHE) / camera.model_name() / name;
+}
+
+// The views another test process of this ctest run already rendered, or an
+// empty vector. PNG is lossless, so a cached view equals a fresh render.
+std::vector<cv::Mat> load_cached_views(const Camera& camera, std::size_t count) {
+  std::vector<cv::Mat> images;
+  for (std::size_t v = 0; v < count; ++v) {
+    cv::Mat image = cv::imread(cached_view_path(camera, v).string(), cv::IMREAD_UNCHANGED);
+    if (image.empty() || image.cols != camera.width() || image.rows != camera.height()) return {};
+    images.push_back(image);
+  }
+  return images;
+}
+
+// Each file appears whole or not at all (temporary file + rename), so a
+// process reading while another writes sees either nothing or a full image.
+void store_cached_views(const Camera& camera, const std::vector<cv::Mat>& images) {
+  for (std::size_t v = 0; v < images.size(); ++v)
+    write_file_atomically(cached_view_path(camera, v),
+                          [&](const std::filesystem::path& tmp) { cv::imwrite(tmp.string(), images[v]); });
+}
+
+}  // namespace
+
 const std::vector<cv::Mat>& rendered_views(const Camera& camera) {
   static std::vector<std::pair<std::string, std::vector<cv::Mat>>> cache;
   for (const auto& [name, images] : cache)
     if (name == camera.model_name()) return images;
-  cache.emplace_back(camera.model_name(), render_board_views(camera, test_board(), scene_poses(camera)));
+  const std::vector<SE3d> poses = scene_poses(camera);
+  std::vector<cv::Mat> images = load_cached_views(camera, poses.size());
+  if (images.empty()) {
+    images = render_board_views(camera, test_board(), poses);
+    store_cached_views(camera, images);
+  }
+  cache.emplace_back(camera.model_name(), std::move(images));
   return cache.back().second;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The cameras, board and rendered views shared by the calibration tests.
 // Rendering is the slow part, so each camera's views are rendered once per
-// test program and kept.
+// ctest run (cached in the build tree, see CMakeLists.txt) and kept in memory.
 #include <cstddef>
 #include <filesystem>
 #include <vector>
