@@ -9,6 +9,7 @@
 
 #include "core/plot/line_plot.hpp"
 #include "core/trajectory/metrics.hpp"
+#include "core/trajectory/top_view.hpp"
 #include "core/trajectory/trajectory_io.hpp"
 #include "core/util/json.hpp"
 
@@ -19,6 +20,7 @@ struct Options {
   std::filesystem::path gt, est, gt_times, est_times, json, plot;
   std::string align = "sim3";
   std::string format = "auto";
+  std::string plane = "auto";
   double max_dt = kDefaultMaxTimeDifference;
   int rpe_delta = 1;
 };
@@ -38,40 +40,40 @@ void print_table(const Options& o, const TrajectoryEvaluation& e) {
   std::fflush(stdout);
 }
 
-// Top view: the x-z plane, which is the ground plane when y points down as in
-// camera-style world frames (KITTI, a SLAM map started from a camera).
 // The ground truth is drawn in full over the time the estimate covers (not
 // only at the associated poses), so that sparse keyframe estimates are seen
 // against the real path.
 void save_top_view(const Options& o, const Trajectory& gt, const TrajectoryEvaluation& e) {
+  const auto [u, v] = top_view_axes(o.plane, gt);
   plot::LinePlot figure;
   char title[160];
   std::snprintf(title, sizeof title, "Top view, %s alignment: ATE RMSE %.4f m over %zu poses", o.align.c_str(),
                 e.ate_rmse_m, e.pairs);
   figure.set_title(title);
-  figure.set_x_label("x [m]");
-  figure.set_y_label("z [m]");
+  const char axis_names[] = "xyz";
+  figure.set_x_label(std::string(1, axis_names[u]).append(" [m]"));
+  figure.set_y_label(std::string(1, axis_names[v]).append(" [m]"));
   figure.set_equal_axes(true);
 
-  std::vector<double> gt_x, gt_z, est_x, est_z;
+  std::vector<double> gt_u, gt_v, est_u, est_v;
   const double first = e.timestamps.front() - o.max_dt, last = e.timestamps.back() + o.max_dt;
   for (const auto& pose : gt)
     if (pose.timestamp >= first && pose.timestamp <= last) {
-      gt_x.push_back(pose.T_w_c.translation().x());
-      gt_z.push_back(pose.T_w_c.translation().z());
+      gt_u.push_back(pose.T_w_c.translation()[u]);
+      gt_v.push_back(pose.T_w_c.translation()[v]);
     }
   for (const auto& p : e.aligned_est_positions) {
-    est_x.push_back(p.x());
-    est_z.push_back(p.z());
+    est_u.push_back(p[u]);
+    est_v.push_back(p[v]);
   }
   plot::SeriesStyle gt_style;
   gt_style.colour = cv::Scalar(70, 70, 70);
-  figure.add_series("ground truth", gt_x, gt_z, gt_style);
+  figure.add_series("ground truth", gt_u, gt_v, gt_style);
   plot::SeriesStyle est_style;
   est_style.markers = e.pairs <= 300;  // keyframe trajectories: show each pose
   est_style.colour = plot::series_colour(0);
   est_style.thickness = 1;  // the ground truth stays visible underneath
-  figure.add_series("estimate (aligned)", est_x, est_z, est_style);
+  figure.add_series("estimate (aligned)", est_u, est_v, est_style);
   figure.save_png(o.plot);
 }
 
@@ -127,7 +129,11 @@ void add_evaluate_trajectory_command(CLI::App& evaluate) {
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cmd->add_option("--json", options->json, "Write the figures to this JSON file");
-  cmd->add_option("--plot", options->plot, "Write a top view (x-z plane) of both trajectories to this PNG");
+  cmd->add_option("--plot", options->plot, "Write a top view of both trajectories to this PNG");
+  cmd->add_option("--plane", options->plane,
+                  "World plane of the top view: auto (the two axes the ground truth spreads along most), xy, xz or yz")
+      ->check(CLI::IsMember({"auto", "xy", "xz", "yz"}))
+      ->capture_default_str();
   cmd->callback([options] { run(*options); });
 }
 

@@ -23,8 +23,10 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
   t.quality_lost = c.get_double("quality_lost", Range::closed(0, 1), t.quality_lost);
   if (t.quality_lost > t.quality_good) c.fail("quality_lost", "a value not above quality_good");
   t.min_found = c.get_int("min_found", Range::closed(6, 10000), t.min_found);
+  t.good_found = c.get_int("good_found", Range::closed(6, 100000), t.good_found);
   t.keyframe_min_frames = c.get_int("keyframe_min_frames", Range::closed(1, 10000), t.keyframe_min_frames);
   t.keyframe_min_distance = c.get_double("keyframe_min_distance", Range::positive(100), t.keyframe_min_distance);
+  t.keyframe_min_angle_deg = c.get_double("keyframe_min_angle_deg", Range::closed(1, 180), t.keyframe_min_angle_deg);
   t.search.max_zmssd_per_pixel =
       static_cast<float>(c.get_double("max_zmssd_per_pixel", Range::positive(65025), t.search.max_zmssd_per_pixel));
   t.seed = static_cast<std::uint64_t>(c.get_int("seed", Range::closed(0, 2147483647), static_cast<int>(t.seed)));
@@ -42,6 +44,10 @@ void read_mapmaker(const ConfigNode& c, MapMakerOptions& m) {
   m.sync_global_ba_every = c.get_int("sync_global_ba_every", Range::closed(1, 1000), m.sync_global_ba_every);
   m.epipolar.max_zmssd_per_pixel = static_cast<float>(
       c.get_double("epipolar_max_zmssd_per_pixel", Range::positive(65025), m.epipolar.max_zmssd_per_pixel));
+  m.epipolar_partner.min_baseline =
+      c.get_double("epipolar_partner_min_baseline", Range::non_negative(10), m.epipolar_partner.min_baseline);
+  m.epipolar_partner.max_axis_angle_deg = c.get_double("epipolar_partner_max_angle_deg", Range::closed(1, 180),
+                                                       m.epipolar_partner.max_axis_angle_deg);
   m.outlier_min_searches = c.get_int("outlier_min_searches", Range::closed(1, 100000), m.outlier_min_searches);
   m.outlier_max_found_ratio = c.get_double("outlier_max_found_ratio", Range::closed(0, 1), m.outlier_max_found_ratio);
   c.finish();

@@ -8,6 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "mapmaker/mapping/epipolar_partner.hpp"
 #include "mapmaker/mapping/epipolar_search.hpp"
 #include "mapmaker/mapping/map_ba.hpp"
 #include "mapmaker/mapping/point_geometry.hpp"
@@ -51,6 +52,15 @@ std::optional<SE3d> MapMaker::initialise(const TwoViewResult& result, const MapM
   map_.add({kf0, kf1}, points);
   update_depth_stats(*kf0);
   update_depth_stats(*kf1);
+  // The initialiser's points are level-0 corners only. As PTAM does, search
+  // both keyframes' corners at every level against the other keyframe, so
+  // that the first map also has the coarse-level points the tracker's coarse
+  // stage needs to survive fast motion.
+  for (const auto& [newest, other] : {std::pair{kf1, kf0}, std::pair{kf0, kf1}}) {
+    auto more = epipolar_new_points(map_, camera_, *newest, *other, options_.epipolar);
+    map_.add({}, more);
+    points.insert(points.end(), more.begin(), more.end());
+  }
 
   const auto t0 = Clock::now();
   const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt);
@@ -102,21 +112,24 @@ void MapMaker::update_depth_stats(KeyFrame& keyframe) {
   keyframe.set_depth_stats(median, sigma);
 }
 
-std::shared_ptr<KeyFrame> MapMaker::nearest_keyframe(const KeyFrame& keyframe) const {
-  std::shared_ptr<KeyFrame> best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  const auto keyframes = map_.keyframes();
-  std::shared_lock lock(map_.mutex());
-  const Eigen::Vector3d centre = keyframe.centre_w();
-  for (const auto& kf : keyframes) {
-    if (kf->id() == keyframe.id()) continue;
-    const double d = (kf->centre_w() - centre).norm();
-    if (d < best_distance) {
-      best_distance = d;
-      best = kf;
-    }
+std::shared_ptr<KeyFrame> MapMaker::epipolar_partner(const KeyFrame& keyframe) const {
+  std::vector<std::shared_ptr<KeyFrame>> others;
+  std::vector<SE3d> poses;
+  SE3d T_new_w;
+  double depth = 1.0;
+  {
+    const auto keyframes = map_.keyframes();
+    std::shared_lock lock(map_.mutex());
+    for (const auto& kf : keyframes)
+      if (kf->id() != keyframe.id()) {
+        others.push_back(kf);
+        poses.push_back(kf->T_c_w());
+      }
+    T_new_w = keyframe.T_c_w();
+    depth = keyframe.mean_depth();
   }
-  return best;
+  const auto choice = choose_epipolar_partner(T_new_w, depth, poses, options_.epipolar_partner);
+  return choice ? others[*choice] : nullptr;
 }
 
 void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
@@ -129,7 +142,7 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   update_depth_stats(*kf);
 
   std::vector<std::shared_ptr<MapPoint>> created;
-  if (const auto other = nearest_keyframe(*kf)) {
+  if (const auto other = epipolar_partner(*kf)) {
     EpipolarSearchStats es;
     created = epipolar_new_points(map_, camera_, *kf, *other, options_.epipolar, &es);
     map_.add({}, created);

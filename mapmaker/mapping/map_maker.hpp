@@ -77,7 +77,8 @@ class MapMaker {
   void add_keyframe(KeyFrameCandidate candidate);
   void remove_outlier_points();
   void update_depth_stats(KeyFrame& keyframe);
-  std::shared_ptr<KeyFrame> nearest_keyframe(const KeyFrame& keyframe) const;
+  // The keyframe `keyframe` searches for new points against (epipolar_partner.hpp).
+  std::shared_ptr<KeyFrame> epipolar_partner(const KeyFrame& keyframe) const;
   void publish_new_points(const std::shared_ptr<KeyFrame>& keyframe, std::vector<std::shared_ptr<MapPoint>> points);
 
   Camera camera_;

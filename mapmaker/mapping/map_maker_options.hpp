@@ -6,6 +6,7 @@
 #include "mapmaker/ba/ba_selection.hpp"
 #include "mapmaker/ba/bundle_adjuster.hpp"
 #include "mapmaker/init/init_options.hpp"
+#include "mapmaker/mapping/epipolar_partner.hpp"
 
 namespace facadeslam {
 
@@ -25,6 +26,7 @@ struct EpipolarSearchOptions {
 struct MapMakerOptions {
   TwoViewOptions initialisation;
   EpipolarSearchOptions epipolar;
+  EpipolarPartnerOptions epipolar_partner;
   LocalBaOptions local_ba_selection;
   BundleAdjusterOptions local_ba;
   BundleAdjusterOptions global_ba;

@@ -44,8 +44,10 @@ TEST(SlamOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_DOUBLE_EQ(t.quality_good, d.quality_good);
   EXPECT_DOUBLE_EQ(t.quality_lost, d.quality_lost);
   EXPECT_EQ(t.min_found, d.min_found);
+  EXPECT_EQ(t.good_found, d.good_found);
   EXPECT_EQ(t.keyframe_min_frames, d.keyframe_min_frames);
   EXPECT_DOUBLE_EQ(t.keyframe_min_distance, d.keyframe_min_distance);
+  EXPECT_DOUBLE_EQ(t.keyframe_min_angle_deg, d.keyframe_min_angle_deg);
   EXPECT_FLOAT_EQ(t.search.max_zmssd_per_pixel, d.search.max_zmssd_per_pixel);
   EXPECT_EQ(t.seed, d.seed);
   const MapMakerOptions &m = loaded.mapmaker, &md = defaults.mapmaker;
@@ -56,6 +58,8 @@ TEST(SlamOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_EQ(m.global_ba.max_iterations, md.global_ba.max_iterations);
   EXPECT_EQ(m.sync_global_ba_every, md.sync_global_ba_every);
   EXPECT_FLOAT_EQ(m.epipolar.max_zmssd_per_pixel, md.epipolar.max_zmssd_per_pixel);
+  EXPECT_DOUBLE_EQ(m.epipolar_partner.min_baseline, md.epipolar_partner.min_baseline);
+  EXPECT_DOUBLE_EQ(m.epipolar_partner.max_axis_angle_deg, md.epipolar_partner.max_axis_angle_deg);
   EXPECT_EQ(m.outlier_min_searches, md.outlier_min_searches);
   EXPECT_DOUBLE_EQ(m.outlier_max_found_ratio, md.outlier_max_found_ratio);
 }
@@ -85,6 +89,11 @@ TEST(SlamOptions, RejectsBadValues) {
   EXPECT_THAT(load_error("tracker:\n  fast_thresholds: {level0: 0}\n"), HasSubstr("level0"));
   EXPECT_THAT(load_error("tracker:\n  quality_good: 0.2\n  quality_lost: 0.3\n"), HasSubstr("quality_lost"));
   EXPECT_THAT(load_error("mapmaker:\n  outlier_max_found_ratio: -0.1\n"), HasSubstr("outlier_max_found_ratio"));
+  EXPECT_THAT(load_error("tracker:\n  keyframe_min_angle_deg: 0\n"), HasSubstr("keyframe_min_angle_deg"));
+  EXPECT_THAT(load_error("mapmaker:\n  epipolar_partner_max_angle_deg: 200\n"),
+              HasSubstr("epipolar_partner_max_angle_deg"));
+  EXPECT_THAT(load_error("mapmaker:\n  epipolar_partner_min_baseline: -1\n"),
+              HasSubstr("epipolar_partner_min_baseline"));
 }
 
 }  // namespace

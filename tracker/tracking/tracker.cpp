@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <numbers>
 #include <shared_mutex>
 #include <unordered_map>
 
@@ -190,12 +191,12 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const T
 
   const double ratio =
       result.fine_searched > 0 ? static_cast<double>(result.fine_found) / result.fine_searched : 0.0;
-  if (result.fine_found < options_.min_found || ratio < options_.quality_lost)
-    result.quality = TrackingQuality::bad;
-  else if (ratio < options_.quality_good)
-    result.quality = TrackingQuality::dodgy;
-  else
+  if (result.fine_found >= options_.good_found || (result.fine_found >= options_.min_found && ratio >= options_.quality_good))
     result.quality = TrackingQuality::good;
+  else if (result.fine_found < options_.min_found || ratio < options_.quality_lost)
+    result.quality = TrackingQuality::bad;
+  else
+    result.quality = TrackingQuality::dodgy;
   return inliers;
 }
 
@@ -261,16 +262,19 @@ bool Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_ind
   if (result.quality != TrackingQuality::good) return false;
   if (frame_index < last_keyframe_frame_ + static_cast<std::size_t>(options_.keyframe_min_frames)) return false;
   if (keyframes_.size() >= options_.keyframe_max_queue) return false;
-  // Far enough from every keyframe, in units of that keyframe's scene depth.
+  // Some keyframe near the camera (in units of its scene depth) that looks
+  // the same way (optical axes: the third rows of R_c_w) already covers this view.
   const Eigen::Vector3d centre = result.T_c_w.inverse().translation();
+  const Eigen::Vector3d axis = result.T_c_w.rotation_matrix().row(2).transpose();
+  const double min_cos = std::cos(options_.keyframe_min_angle_deg * std::numbers::pi / 180.0);
   const auto keyframes = map_.keyframes();
   std::shared_lock lock(map_.mutex());
-  double nearest = std::numeric_limits<double>::infinity();
-  for (const auto& kf : keyframes) {
-    const double d = (kf->centre_w() - centre).norm() / std::max(kf->mean_depth(), 1e-9);
-    nearest = std::min(nearest, d);
-  }
-  return nearest > options_.keyframe_min_distance;
+  const bool covered = std::any_of(keyframes.begin(), keyframes.end(), [&](const auto& kf) {
+    const double distance = (kf->centre_w() - centre).norm() / std::max(kf->mean_depth(), 1e-9);
+    const double cos_angle = kf->T_c_w().rotation_matrix().row(2).dot(axis.transpose());
+    return distance <= options_.keyframe_min_distance && cos_angle >= min_cos;
+  });
+  return !covered;
 }
 
 void Tracker::request_keyframe(const TrackerInput& frame, const SE3d& T_c_w,

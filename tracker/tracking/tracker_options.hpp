@@ -38,14 +38,25 @@ struct TrackerOptions {
   double quality_good = 0.3;
   double quality_lost = 0.13;
   int min_found = 20;             // fewer points found is a failure whatever the ratio
+  // This many inliers is good tracking whatever the ratio: around a 3D
+  // object (templeRing) half of the projected points are occluded or seen
+  // from too far round, so the ratio stays low while hundreds of points
+  // still pin the pose down.
+  int good_found = 150;
   // Bad frames in a row still tracked from the motion model before the
   // relocaliser takes over (PTAM's NUM_LOST_FRAMES).
   int lost_frames_before_relocalising = 3;
 
-  // Keyframes: only when tracking is good, enough frames have passed, and
-  // the camera is far enough from every keyframe relative to scene depth.
+  // Keyframes: only when tracking is good, enough frames have passed, and no
+  // keyframe sees the scene as the camera does now: every keyframe is either
+  // far away relative to its scene depth (PTAM's rule) or looks in another
+  // direction. The second half adds keyframes when the camera turns on the
+  // spot, which PTAM never does: without them the map ends at the edge of
+  // the last keyframe's view and tracking is lost once the camera has turned
+  // past it.
   int keyframe_min_frames = 20;
   double keyframe_min_distance = 0.12;  // x the nearest keyframe's mean scene depth
+  double keyframe_min_angle_deg = 15.0; // between optical axes
   std::size_t keyframe_max_queue = 3;   // map maker busy: wait
 
   // Semantic filtering: points whose label is one of these (with at least

@@ -105,6 +105,34 @@ TEST_F(PlaneTracking, AsksForAKeyframeOnlyAfterMovingFarEnough) {
   EXPECT_FALSE(candidate->small_blurred.empty());
 }
 
+// Turning on the spot: PTAM's distance rule never fires, the angle rule does
+// once the optical axis has turned past keyframe_min_angle_deg.
+TEST_F(PlaneTracking, AsksForAKeyframeWhenTurningOnTheSpot) {
+  const auto turned = [](int i) { return SE3d(SO3d::exp(Eigen::Vector3d(0, 0.25 * i * M_PI / 180.0, 0)), Eigen::Vector3d::Zero()); };
+  for (const double min_angle : {5.0, 180.0}) {
+    TrackerOptions options;
+    options.keyframe_min_frames = 5;
+    options.keyframe_min_distance = 0.05;
+    options.keyframe_min_angle_deg = min_angle;
+    Tracker tracker(camera_, map_, queue_, options);
+    tracker.start(SE3d(), 0);
+    int first_request = -1;
+    for (int i = 1; i <= 30 && first_request < 0; ++i) {
+      const TrackingResult r =
+          tracker.track(frame(static_cast<std::size_t>(i), tracker::test::render(plane_, camera_, turned(i))));
+      ASSERT_TRUE(r.tracked) << "frame " << i;
+      if (r.keyframe_requested) first_request = i;
+    }
+    if (min_angle < 90) {
+      EXPECT_EQ(first_request, 21) << "the first frame turned more than 5 degrees (0.25 degrees per frame)";
+    } else {
+      EXPECT_EQ(first_request, -1) << "no translation, and the angle rule is off";
+    }
+    while (queue_.try_pop()) {
+    }
+  }
+}
+
 TEST_F(PlaneTracking, LosesABlankFrameAndRelocalisesOnTheNextRealOne) {
   Tracker tracker(camera_, map_, queue_, TrackerOptions{});
   tracker.start(SE3d(), 0);

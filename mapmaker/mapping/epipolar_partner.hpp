@@ -1,0 +1,33 @@
+#pragma once
+// Which keyframe a new keyframe searches for new points against.
+//
+// PTAM takes the nearest keyframe. That fails when the camera turns on the
+// spot: the nearest keyframe then stands where the new one stands, no ray
+// pair has parallax, and the new view gets no points, so tracking runs out
+// of map while the camera pans away. The partner must instead have
+//  - a baseline of at least `min_baseline` x the new keyframe's scene depth
+//    (parallax), and
+//  - an optical axis within `max_axis_angle_deg` of the new one (the two
+//    views share part of the scene and see patches at similar angles);
+// among such keyframes the nearest wins (PTAM's choice when it works). If no
+// keyframe qualifies, the nearest keyframe with the baseline, then plain
+// nearest, is the fallback.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "core/lie/se3.hpp"
+
+namespace facadeslam {
+
+struct EpipolarPartnerOptions {
+  double min_baseline = 0.02;         // x the new keyframe's mean scene depth
+  double max_axis_angle_deg = 45.0;
+};
+
+// Index into `others` (their T_c_w), or nothing when `others` is empty.
+std::optional<std::size_t> choose_epipolar_partner(const SE3d& T_new_w, double new_mean_depth,
+                                                   const std::vector<SE3d>& others,
+                                                   const EpipolarPartnerOptions& options);
+
+}  // namespace facadeslam
