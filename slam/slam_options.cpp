@@ -26,6 +26,10 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
   t.good_found = c.get_int("good_found", Range::closed(6, 100000), t.good_found);
   t.keyframe_min_frames = c.get_int("keyframe_min_frames", Range::closed(1, 10000), t.keyframe_min_frames);
   t.keyframe_min_distance = c.get_double("keyframe_min_distance", Range::positive(100), t.keyframe_min_distance);
+  t.keyframe_min_frames_turning =
+      c.get_int("keyframe_min_frames_turning", Range::closed(1, 10000), t.keyframe_min_frames_turning);
+  t.keyframe_distance_after_turn =
+      c.get_double("keyframe_distance_after_turn", Range::positive(1), t.keyframe_distance_after_turn);
   t.keyframe_min_angle_deg = c.get_double("keyframe_min_angle_deg", Range::closed(1, 180), t.keyframe_min_angle_deg);
   t.search.max_zmssd_per_pixel =
       static_cast<float>(c.get_double("max_zmssd_per_pixel", Range::positive(65025), t.search.max_zmssd_per_pixel));

@@ -29,6 +29,10 @@ struct KeyFrameCandidate {
   cv::Mat colour;          // 8-bit BGR
   cv::Mat small_blurred;   // for relocalisation
   std::vector<TrackedMeasurement> measurements;
+  // Requested because the camera turned near an existing keyframe rather than
+  // moved away from every keyframe: the map maker gives it depth-prior
+  // points for the part of the view no keyframe has a baseline to.
+  bool turned_on_the_spot = false;
 };
 
 }  // namespace facadeslam

@@ -22,6 +22,9 @@ double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std
 // A map needs at least this many points to track from.
 constexpr std::size_t kMinInitialPoints = 30;
 
+// Keyframes a single-view (depth-prior) point may wait for a second view.
+constexpr KeyFrame::Id kSingleViewGraceKeyframes = 3;
+
 }  // namespace
 
 MapMaker::MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options)
@@ -142,6 +145,7 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   update_depth_stats(*kf);
 
   std::vector<std::shared_ptr<MapPoint>> created;
+  const bool turning = options_.depth_prior_points && candidate.turned_on_the_spot;
   if (const auto other = epipolar_partner(*kf)) {
     EpipolarSearchStats es;
     created = epipolar_new_points(map_, camera_, *kf, *other, options_.epipolar, &es);
@@ -152,6 +156,13 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
         "(levels 0-3: {} {} {} {})",
         kf->id(), candidate.frame_index, candidate.measurements.size(), other->id(), es.candidates, es.matched,
         es.triangulated, by_level[0], by_level[1], by_level[2], by_level[3]);
+  }
+  if (turning) {
+    auto more = depth_prior_points(map_, camera_, *kf, options_.depth_prior);
+    spdlog::debug("keyframe {} (frame {}): turning on the spot, {} points at a prior depth", kf->id(),
+                  candidate.frame_index, more.size());
+    map_.add({}, more);
+    created.insert(created.end(), more.begin(), more.end());
   }
 
   const MapBaReport ba =
@@ -176,14 +187,21 @@ void MapMaker::remove_outlier_points() {
   // Measurement counts over all keyframes (map maker thread owns them).
   const auto keyframes = map_.keyframes();
   std::map<MapPoint::Id, int> measured;
-  for (const auto& kf : keyframes)
+  KeyFrame::Id newest = 0;
+  for (const auto& kf : keyframes) {
+    newest = std::max(newest, kf->id());
     for (const auto& [id, m] : kf->measurements()) ++measured[id];
+  }
   for (const auto& p : map_.points()) {
     const bool rarely_found =
         p->times_searched() >= static_cast<std::uint32_t>(options_.outlier_min_searches) &&
         p->times_found() < options_.outlier_max_found_ratio * p->times_searched();
     const auto it = measured.find(p->id());
-    if (rarely_found || it == measured.end() || it->second < 2) p->mark_bad();
+    // A point seen by one keyframe only is kept while its keyframe is among
+    // the newest few: a depth-prior point waits there for its second view.
+    const bool awaiting_second_view = p->source().keyframe_id + kSingleViewGraceKeyframes > newest;
+    const bool too_few_views = it == measured.end() || (it->second < 2 && !awaiting_second_view);
+    if (rarely_found || too_few_views) p->mark_bad();
   }
   const auto removed = map_.remove_bad_points();
   if (removed.empty()) return;

@@ -6,6 +6,7 @@
 #include "mapmaker/ba/ba_selection.hpp"
 #include "mapmaker/ba/bundle_adjuster.hpp"
 #include "mapmaker/init/init_options.hpp"
+#include "mapmaker/mapping/depth_prior_points.hpp"
 #include "mapmaker/mapping/epipolar_partner.hpp"
 
 namespace facadeslam {
@@ -27,6 +28,10 @@ struct MapMakerOptions {
   TwoViewOptions initialisation;
   EpipolarSearchOptions epipolar;
   EpipolarPartnerOptions epipolar_partner;
+  // Keyframes the tracker took because the camera turned near an existing
+  // keyframe also get points at a prior depth (depth_prior_points.hpp).
+  bool depth_prior_points = true;
+  DepthPriorOptions depth_prior;
   LocalBaOptions local_ba_selection;
   BundleAdjusterOptions local_ba;
   BundleAdjusterOptions global_ba;

@@ -48,6 +48,8 @@ TEST(SlamOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_EQ(t.keyframe_min_frames, d.keyframe_min_frames);
   EXPECT_DOUBLE_EQ(t.keyframe_min_distance, d.keyframe_min_distance);
   EXPECT_DOUBLE_EQ(t.keyframe_min_angle_deg, d.keyframe_min_angle_deg);
+  EXPECT_EQ(t.keyframe_min_frames_turning, d.keyframe_min_frames_turning);
+  EXPECT_DOUBLE_EQ(t.keyframe_distance_after_turn, d.keyframe_distance_after_turn);
   EXPECT_FLOAT_EQ(t.search.max_zmssd_per_pixel, d.search.max_zmssd_per_pixel);
   EXPECT_EQ(t.seed, d.seed);
   const MapMakerOptions &m = loaded.mapmaker, &md = defaults.mapmaker;

@@ -47,6 +47,7 @@ Tracker::Tracker(Camera camera, Map& map, KeyFrameQueue& keyframes, TrackerOptio
 
 void Tracker::start(const SE3d& T_c_w, std::size_t frame_index) {
   started_ = true;
+  last_keyframe_turned_ = false;
   T_c_w_ = T_c_w;
   velocity_.setZero();
   lost_frames_ = 0;
@@ -251,34 +252,46 @@ TrackingResult Tracker::track(const TrackerInput& frame) {
   lost_frames_ = 0;
   result.tracked = true;
 
-  if (wants_keyframe(result, frame.index)) {
-    request_keyframe(frame, result.T_c_w, std::move(inliers));
+  if (const KeyFrameReason reason = wants_keyframe(result, frame.index); reason != KeyFrameReason::none) {
+    request_keyframe(frame, result.T_c_w, std::move(inliers), reason);
     result.keyframe_requested = true;
   }
   return result;
 }
 
-bool Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {
-  if (result.quality != TrackingQuality::good) return false;
-  if (frame_index < last_keyframe_frame_ + static_cast<std::size_t>(options_.keyframe_min_frames)) return false;
-  if (keyframes_.size() >= options_.keyframe_max_queue) return false;
-  // Some keyframe near the camera (in units of its scene depth) that looks
-  // the same way (optical axes: the third rows of R_c_w) already covers this view.
+Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {
+  if (result.quality != TrackingQuality::good) return KeyFrameReason::none;
+  if (keyframes_.size() >= options_.keyframe_max_queue) return KeyFrameReason::none;
+  const std::size_t frames = frame_index - last_keyframe_frame_;
+  if (frames < static_cast<std::size_t>(std::min(options_.keyframe_min_frames, options_.keyframe_min_frames_turning)))
+    return KeyFrameReason::none;
+  // A keyframe near the camera (in units of its scene depth) that looks the
+  // same way (optical axes: the third rows of R_c_w) already covers this
+  // view. Near keyframes that all look elsewhere: the camera has turned.
   const Eigen::Vector3d centre = result.T_c_w.inverse().translation();
   const Eigen::Vector3d axis = result.T_c_w.rotation_matrix().row(2).transpose();
   const double min_cos = std::cos(options_.keyframe_min_angle_deg * std::numbers::pi / 180.0);
+  // After a turn the newest keyframes hold depth-prior points: the first
+  // small step away gives them a baseline, so it makes a keyframe sooner.
+  const double min_distance =
+      options_.keyframe_min_distance * (last_keyframe_turned_ ? options_.keyframe_distance_after_turn : 1.0);
   const auto keyframes = map_.keyframes();
   std::shared_lock lock(map_.mutex());
-  const bool covered = std::any_of(keyframes.begin(), keyframes.end(), [&](const auto& kf) {
+  bool near = false;
+  for (const auto& kf : keyframes) {
     const double distance = (kf->centre_w() - centre).norm() / std::max(kf->mean_depth(), 1e-9);
-    const double cos_angle = kf->T_c_w().rotation_matrix().row(2).dot(axis.transpose());
-    return distance <= options_.keyframe_min_distance && cos_angle >= min_cos;
-  });
-  return !covered;
+    if (distance > min_distance) continue;
+    near = true;
+    if (kf->T_c_w().rotation_matrix().row(2).dot(axis.transpose()) >= min_cos) return KeyFrameReason::none;
+  }
+  if (near) return frames >= static_cast<std::size_t>(options_.keyframe_min_frames_turning) ? KeyFrameReason::turned
+                                                                                            : KeyFrameReason::none;
+  return frames >= static_cast<std::size_t>(options_.keyframe_min_frames) ? KeyFrameReason::moved
+                                                                          : KeyFrameReason::none;
 }
 
 void Tracker::request_keyframe(const TrackerInput& frame, const SE3d& T_c_w,
-                               std::vector<TrackedMeasurement> measurements) {
+                               std::vector<TrackedMeasurement> measurements, KeyFrameReason reason) {
   KeyFrameCandidate candidate;
   candidate.frame_index = frame.index;
   candidate.timestamp = frame.timestamp;
@@ -287,6 +300,8 @@ void Tracker::request_keyframe(const TrackerInput& frame, const SE3d& T_c_w,
   candidate.colour = frame.colour;
   candidate.small_blurred = make_small_blurry_image(*frame.pyramid);
   candidate.measurements = std::move(measurements);
+  candidate.turned_on_the_spot = reason == KeyFrameReason::turned;
+  last_keyframe_turned_ = candidate.turned_on_the_spot;
   keyframes_.push(std::move(candidate));
   last_keyframe_frame_ = frame.index;
 }

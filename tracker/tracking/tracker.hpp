@@ -93,9 +93,10 @@ class Tracker {
   // The coarse + fine stages and pose updates from `T_start`; fills `result`.
   std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const TrackerInput& frame,
                                              TrackingResult& result);
-  bool wants_keyframe(const TrackingResult& result, std::size_t frame_index) const;
-  void request_keyframe(const TrackerInput& frame, const SE3d& T_c_w,
-                        std::vector<TrackedMeasurement> measurements);
+  enum class KeyFrameReason { none, moved, turned };
+  KeyFrameReason wants_keyframe(const TrackingResult& result, std::size_t frame_index) const;
+  void request_keyframe(const TrackerInput& frame, const SE3d& T_c_w, std::vector<TrackedMeasurement> measurements,
+                        KeyFrameReason reason);
 
   Camera camera_;
   Map& map_;
@@ -107,6 +108,7 @@ class Tracker {
   Eigen::Matrix<double, 6, 1> velocity_ = Eigen::Matrix<double, 6, 1>::Zero();
   int lost_frames_ = 0;
   std::size_t last_keyframe_frame_ = 0;
+  bool last_keyframe_turned_ = false;
 };
 
 }  // namespace facadeslam

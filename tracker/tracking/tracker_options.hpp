@@ -57,6 +57,8 @@ struct TrackerOptions {
   int keyframe_min_frames = 20;
   double keyframe_min_distance = 0.12;  // x the nearest keyframe's mean scene depth
   double keyframe_min_angle_deg = 15.0; // between optical axes
+  int keyframe_min_frames_turning = 10; // turning is fast: the view leaves the map in a second
+  double keyframe_distance_after_turn = 0.25;  // x keyframe_min_distance for the first keyframe after a turn
   std::size_t keyframe_max_queue = 3;   // map maker busy: wait
 
   // Semantic filtering: points whose label is one of these (with at least

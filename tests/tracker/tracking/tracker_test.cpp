@@ -103,6 +103,7 @@ TEST_F(PlaneTracking, AsksForAKeyframeOnlyAfterMovingFarEnough) {
   EXPECT_EQ(candidate->frame_index, static_cast<std::size_t>(first_request));
   EXPECT_GT(candidate->measurements.size(), 200u);
   EXPECT_FALSE(candidate->small_blurred.empty());
+  EXPECT_FALSE(candidate->turned_on_the_spot);
 }
 
 // Turning on the spot: PTAM's distance rule never fires, the angle rule does
@@ -125,6 +126,9 @@ TEST_F(PlaneTracking, AsksForAKeyframeWhenTurningOnTheSpot) {
     }
     if (min_angle < 90) {
       EXPECT_EQ(first_request, 21) << "the first frame turned more than 5 degrees (0.25 degrees per frame)";
+      const auto candidate = queue_.try_pop();
+      ASSERT_TRUE(candidate);
+      EXPECT_TRUE(candidate->turned_on_the_spot);
     } else {
       EXPECT_EQ(first_request, -1) << "no translation, and the angle rule is off";
     }

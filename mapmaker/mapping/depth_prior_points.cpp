@@ -1,0 +1,79 @@
+#include "mapmaker/mapping/depth_prior_points.hpp"
+
+#include <algorithm>
+#include <shared_mutex>
+
+#include "mapmaker/mapping/point_geometry.hpp"
+
+namespace facadeslam {
+namespace {
+
+struct MeasuredDepth {
+  Eigen::Vector2d pixel;  // level 0
+  double depth;
+};
+
+// Median depth of the `k` measured points nearest to `pixel` in the image.
+double prior_depth(std::vector<MeasuredDepth>& measured, const Eigen::Vector2d& pixel, int k) {
+  const auto n = static_cast<std::ptrdiff_t>(std::min<std::size_t>(measured.size(), static_cast<std::size_t>(k)));
+  std::partial_sort(measured.begin(), measured.begin() + n, measured.end(), [&](const auto& a, const auto& b) {
+    return (a.pixel - pixel).squaredNorm() < (b.pixel - pixel).squaredNorm();
+  });
+  std::vector<double> depths;
+  for (std::ptrdiff_t i = 0; i < n; ++i) depths.push_back(measured[static_cast<std::size_t>(i)].depth);
+  std::nth_element(depths.begin(), depths.begin() + n / 2, depths.end());
+  return depths[static_cast<std::size_t>(n / 2)];
+}
+
+}  // namespace
+
+std::vector<std::shared_ptr<MapPoint>> depth_prior_points(Map& map, const Camera& camera, KeyFrame& keyframe,
+                                                          const DepthPriorOptions& options) {
+  SE3d T_c_w;
+  std::vector<MeasuredDepth> measured;
+  {
+    std::shared_lock lock(map.mutex());
+    T_c_w = keyframe.T_c_w();
+    for (const auto& [id, m] : keyframe.measurements()) {
+      const auto p = map.point_locked(id);
+      if (!p || p->is_bad()) continue;
+      const double z = (T_c_w * p->position()).z();
+      if (z > 0) measured.push_back({m.pixel, z});
+    }
+  }
+  if (measured.empty()) return {};
+
+  std::vector<std::shared_ptr<MapPoint>> created;
+  const double min_d2 = options.min_distance_to_measurement * options.min_distance_to_measurement;
+  for (int level = 0; level < kPyramidLevels; ++level) {
+    const int wanted = options.max_points_per_level[static_cast<std::size_t>(level)];
+    if (wanted <= 0) continue;
+    // Keep away from measurements at this level or the next coarser one (as
+    // the epipolar search does) and from the points made here.
+    std::vector<Eigen::Vector2d> taken;
+    for (const auto& [id, m] : keyframe.measurements())
+      if (m.level == level || m.level == level + 1) taken.push_back(ImagePyramid::level0_to_level(m.pixel, level));
+    std::vector<Corner> corners = keyframe.pyramid()->level(level).corners;
+    std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.score > b.score; });
+    int made = 0;
+    for (const Corner& c : corners) {
+      if (made >= wanted) break;
+      const Eigen::Vector2d at(c.x, c.y);
+      if (std::any_of(taken.begin(), taken.end(), [&](const auto& t) { return (t - at).squaredNorm() < min_d2; }))
+        continue;
+      const Eigen::Vector2d pixel0 = ImagePyramid::level_to_level0(at, level);
+      const double depth = prior_depth(measured, pixel0, options.depth_neighbours);
+      // unproject() gives the ray on the z = 1 plane, so `depth` scales it to z = depth.
+      const Eigen::Vector3d p_w = T_c_w.inverse() * (camera.unproject(pixel0) * depth);;
+      const PatchSource source{keyframe.id(), keyframe.pyramid(), level, pixel0};
+      auto point = std::make_shared<MapPoint>(map.new_point_id(), source, source_geometry(camera, T_c_w, source, p_w));
+      keyframe.measurements()[point->id()] = {level, pixel0, true};
+      taken.push_back(at);
+      created.push_back(std::move(point));
+      ++made;
+    }
+  }
+  return created;
+}
+
+}  // namespace facadeslam
