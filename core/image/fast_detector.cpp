@@ -60,14 +60,19 @@ std::vector<Corner> detect_fast(const cv::Mat& grey, const FastOptions& options)
   // ties with a neighbour's (common on rendered or clean synthetic images)
   // vanishes entirely; we score the candidates and suppress with a raster-order
   // tie-break instead, keeping exactly one pixel of every plateau.
-  std::vector<cv::KeyPoint> candidates;
+  // Per-thread buffers, reused from frame to frame: a fresh 1.2 MB score
+  // image per level-0 call cost more in page faults than the scoring itself.
+  thread_local std::vector<cv::KeyPoint> candidates;
+  thread_local cv::Mat scores;
+  candidates.clear();
   cv::FAST(grey, candidates, options.threshold, /*nonmaxSuppression=*/false, cv::FastFeatureDetector::TYPE_9_16);
 
   int offsets[16];
   const int stride = static_cast<int>(grey.step1());
   for (int i = 0; i < 16; ++i) offsets[i] = kCircle[i][1] * stride + kCircle[i][0];
 
-  cv::Mat scores(grey.size(), CV_32FC1, cv::Scalar(0));
+  scores.create(grey.size(), CV_32FC1);
+  scores.setTo(cv::Scalar(0));
   for (const auto& kp : candidates) {
     const int x = static_cast<int>(kp.pt.x), y = static_cast<int>(kp.pt.y);
     scores.ptr<float>(y)[x] = fast_score(grey.ptr<std::uint8_t>(y) + x, offsets);
