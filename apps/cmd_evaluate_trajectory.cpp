@@ -7,7 +7,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include "core/plot/line_plot.hpp"
 #include "core/trajectory/metrics.hpp"
 #include "core/trajectory/top_view.hpp"
 #include "core/trajectory/trajectory_io.hpp"
@@ -40,43 +39,6 @@ void print_table(const Options& o, const TrajectoryEvaluation& e) {
   std::fflush(stdout);
 }
 
-// The ground truth is drawn in full over the time the estimate covers (not
-// only at the associated poses), so that sparse keyframe estimates are seen
-// against the real path.
-void save_top_view(const Options& o, const Trajectory& gt, const TrajectoryEvaluation& e) {
-  const auto [u, v] = top_view_axes(o.plane, gt);
-  plot::LinePlot figure;
-  char title[160];
-  std::snprintf(title, sizeof title, "Top view, %s alignment: ATE RMSE %.4f m over %zu poses", o.align.c_str(),
-                e.ate_rmse_m, e.pairs);
-  figure.set_title(title);
-  const char axis_names[] = "xyz";
-  figure.set_x_label(std::string(1, axis_names[u]).append(" [m]"));
-  figure.set_y_label(std::string(1, axis_names[v]).append(" [m]"));
-  figure.set_equal_axes(true);
-
-  std::vector<double> gt_u, gt_v, est_u, est_v;
-  const double first = e.timestamps.front() - o.max_dt, last = e.timestamps.back() + o.max_dt;
-  for (const auto& pose : gt)
-    if (pose.timestamp >= first && pose.timestamp <= last) {
-      gt_u.push_back(pose.T_w_c.translation()[u]);
-      gt_v.push_back(pose.T_w_c.translation()[v]);
-    }
-  for (const auto& p : e.aligned_est_positions) {
-    est_u.push_back(p[u]);
-    est_v.push_back(p[v]);
-  }
-  plot::SeriesStyle gt_style;
-  gt_style.colour = cv::Scalar(70, 70, 70);
-  figure.add_series("ground truth", gt_u, gt_v, gt_style);
-  plot::SeriesStyle est_style;
-  est_style.markers = e.pairs <= 300;  // keyframe trajectories: show each pose
-  est_style.colour = plot::series_colour(0);
-  est_style.thickness = 1;  // the ground truth stays visible underneath
-  figure.add_series("estimate (aligned)", est_u, est_v, est_style);
-  figure.save_png(o.plot);
-}
-
 void run(const Options& o) {
   const TrajectoryFormat format = parse_trajectory_format(o.format);
   EvaluationOptions options;
@@ -101,7 +63,7 @@ void run(const Options& o) {
     spdlog::info("wrote {}", o.json.string());
   }
   if (!o.plot.empty()) {
-    save_top_view(o, gt, e);
+    save_top_view_png(o.plot, gt, e, o.plane, o.align, o.max_dt);
     spdlog::info("wrote {}", o.plot.string());
   }
 }

@@ -1,8 +1,12 @@
 #pragma once
-// Which two world axes a top view of a trajectory plots.
+// Top views of a trajectory against ground truth: which two world axes to
+// plot, and the PNG (`evaluate trajectory --plot`, `replay --gt`).
 #include <array>
+#include <filesystem>
+#include <string>
 #include <string_view>
 
+#include "core/trajectory/metrics.hpp"
 #include "core/trajectory/trajectory.hpp"
 
 namespace facadeslam {
@@ -14,5 +18,14 @@ namespace facadeslam {
 // streets), since a hand-held or vehicle path mostly keeps its height.
 // Throws Error for any other name.
 std::array<int, 2> top_view_axes(std::string_view plane, const Trajectory& trajectory);
+
+// Writes the ground truth and the aligned estimate of `evaluation` seen from
+// above (axes from top_view_axes(plane, gt)) as a PNG, atomically. The
+// ground truth is drawn in full over the time the estimate covers (not only
+// at the associated poses), so that sparse keyframe estimates are seen
+// against the real path. `alignment` names the alignment in the title.
+void save_top_view_png(const std::filesystem::path& path, const Trajectory& gt, const TrajectoryEvaluation& evaluation,
+                       std::string_view plane = "auto", std::string_view alignment = "sim3",
+                       double max_dt = kDefaultMaxTimeDifference);
 
 }  // namespace facadeslam

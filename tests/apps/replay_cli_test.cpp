@@ -136,6 +136,30 @@ TEST_F(ReplayCli, CorruptFrameMidSequenceIsCountedAndSkipped) {
   EXPECT_GE(test::json_number(report, "frames_tracked"), 34.0);
 }
 
+// Every output a user gets; with ground truth the ATE figures and the top
+// view PNG, without it neither.
+TEST_F(ReplayCli, WritesEveryOutputAndWithGroundTruthTheAteAndItsPlot) {
+  const fs::path sequence = render_demo("demo", 50);
+  for (const bool with_gt : {true, false}) {
+    const fs::path out = dir_ / (with_gt ? "with-gt" : "without-gt");
+    std::string args = "-q replay ";
+    args.append(quoted(sequence / "rgb.txt")).append(" --sync --out ").append(quoted(out));
+    if (with_gt) args.append(" --gt ").append(quoted(sequence / "groundtruth.txt"));
+    const test::CliResult r = run(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* file : {"trajectory.txt", "keyframes.txt", "map.ply", "map.fslmap", "report.json"})
+      EXPECT_TRUE(fs::exists(out / file)) << file;
+    const std::string report = test::read_file_text(out / "report.json");
+    EXPECT_EQ(report.find("ate_percent_of_path") != std::string::npos, with_gt) << report;
+    EXPECT_EQ(fs::exists(out / "trajectory.png"), with_gt);
+    if (with_gt) {
+      const cv::Mat plot = cv::imread((out / "trajectory.png").string());
+      EXPECT_FALSE(plot.empty());
+      EXPECT_LT(test::json_number(report, "ate_percent_of_path"), 10.0);
+    }
+  }
+}
+
 TEST_F(ReplayCli, MapFromAnotherCameraIsRejected) {
   const fs::path sequence = render_demo("demo", 40);
   const fs::path map = dir_ / "demo.fslmap";

@@ -1,0 +1,54 @@
+#include "apps/replay/replay_log.hpp"
+
+#include <algorithm>
+
+namespace facadeslam::apps {
+
+Eigen::Isometry3d to_isometry(const SE3d& T_w_c) {
+  Eigen::Isometry3d iso = Eigen::Isometry3d::Identity();
+  iso.linear() = T_w_c.rotation_matrix();
+  iso.translation() = T_w_c.translation();
+  return iso;
+}
+
+Json timing_summary(std::vector<double> ms) {
+  Json j = Json::object();
+  if (ms.empty()) return j;
+  std::sort(ms.begin(), ms.end());
+  double sum = 0;
+  for (double v : ms) sum += v;
+  j["median_ms"] = ms[ms.size() / 2];
+  j["p95_ms"] = ms[std::min(ms.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(ms.size())))];
+  j["mean_ms"] = sum / static_cast<double>(ms.size());
+  return j;
+}
+
+void ReplayLog::add(const FrameReport& r, bool initialised) {
+  ++frames;
+  if (r.has_pose) {
+    ++tracked;
+    trajectory.push_back({r.timestamp, to_isometry(r.T_c_w.inverse())});
+  } else if (initialised) {
+    ++lost;
+  }
+  relocalisations += r.status == FrameStatus::relocalised;
+  pyramid_ms.push_back(r.pyramid_ms);
+  total_ms.push_back(r.total_ms);
+  if (r.status == FrameStatus::tracking || r.status == FrameStatus::relocalised) {
+    coarse_ms.push_back(r.tracking.timings.coarse_ms);
+    fine_ms.push_back(r.tracking.timings.fine_ms);
+    pose_ms.push_back(r.tracking.timings.pose_ms);
+  }
+}
+
+Json ReplayLog::timings() const {
+  Json t = Json::object();
+  t["pyramid_fast"] = timing_summary(pyramid_ms);
+  t["coarse"] = timing_summary(coarse_ms);
+  t["fine"] = timing_summary(fine_ms);
+  t["pose_update"] = timing_summary(pose_ms);
+  t["frame_total"] = timing_summary(total_ms);
+  return t;
+}
+
+}  // namespace facadeslam::apps

@@ -1,0 +1,31 @@
+#pragma once
+// What a replay records frame by frame: counts, the trajectory of the frames
+// with a pose, and the tracker's stage timings.
+#include <cstddef>
+#include <vector>
+
+#include "core/trajectory/trajectory.hpp"
+#include "core/util/json.hpp"
+#include "slam/system.hpp"
+
+namespace facadeslam::apps {
+
+struct ReplayLog {
+  std::size_t frames = 0, tracked = 0, lost = 0, relocalisations = 0;
+  Trajectory trajectory;  // camera-to-world of every frame with a pose
+  std::vector<double> pyramid_ms, coarse_ms, fine_ms, pose_ms, total_ms;
+
+  // `initialised`: whether the system had a map at this frame (a frame
+  // without a pose counts as lost only then).
+  void add(const FrameReport& report, bool initialised);
+  // {"pyramid_fast": {median_ms, p95_ms, mean_ms}, "coarse": ..., "fine": ...,
+  //  "pose_update": ..., "frame_total": ...}
+  Json timings() const;
+};
+
+// median_ms, p95_ms and mean_ms of `ms` (an empty object when empty).
+Json timing_summary(std::vector<double> ms);
+
+Eigen::Isometry3d to_isometry(const SE3d& T_w_c);
+
+}  // namespace facadeslam::apps

@@ -1,0 +1,76 @@
+#include "apps/replay/replay_outputs.hpp"
+
+#include <shared_mutex>
+
+#include <spdlog/spdlog.h>
+
+#include "core/map/map_io.hpp"
+#include "core/map/point_cloud_writer.hpp"
+#include "core/trajectory/metrics.hpp"
+#include "core/trajectory/top_view.hpp"
+#include "core/trajectory/trajectory_io.hpp"
+
+namespace facadeslam::apps {
+namespace {
+
+Trajectory keyframe_trajectory(const Map& map) {
+  Trajectory keyframes;
+  const auto kfs = map.keyframes();
+  std::shared_lock lock(map.mutex());
+  for (const auto& kf : kfs) keyframes.push_back({kf->timestamp(), to_isometry(kf->T_c_w().inverse())});
+  return keyframes;
+}
+
+Json mapping_summary(const MapMakerStats& stats) {
+  Json mapping = Json::object();
+  mapping["points_created"] = stats.points_created;
+  mapping["points_removed"] = stats.points_removed;
+  mapping["local_ba_runs"] = stats.local_ba_runs;
+  mapping["global_ba_runs"] = stats.global_ba_runs;
+  mapping["global_ba_aborted"] = stats.global_ba_aborted;
+  return mapping;
+}
+
+}  // namespace
+
+Json write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
+                          const System& system, const ReadStats& read_stats) {
+  std::filesystem::create_directories(paths.out);
+  write_tum_trajectory(paths.out / "trajectory.txt", log.trajectory);
+  write_tum_trajectory(paths.out / "keyframes.txt", keyframe_trajectory(system.map()));
+  const std::size_t cloud_points = write_labelled_point_cloud(paths.out / "map.ply", system.map());
+  save_map(paths.map_file, system.map(), system.camera());
+
+  const auto stats = system.map_maker_stats();
+  Json report = Json::object();
+  report["sequence"] = info.sequence.string();
+  report["camera"] = info.camera_file.string();
+  report["mode"] = info.synchronous ? "synchronous" : "threaded";
+  report["initialised"] = system.initialised();
+  report["frames"] = log.frames;
+  report["frames_tracked"] = log.tracked;
+  report["frames_lost"] = log.lost;
+  report["frames_corrupt_skipped"] = read_stats.frames_skipped_corrupt;
+  report["relocalisations"] = log.relocalisations;
+  report["keyframes"] = system.map().keyframe_count();
+  report["points"] = cloud_points;
+  Json timings = log.timings();
+  timings["local_ba_total_ms"] = stats.local_ba_ms;
+  timings["global_ba_total_ms"] = stats.global_ba_ms;
+  report["timings"] = timings;
+  report["mapping"] = mapping_summary(stats);
+  if (!paths.gt.empty() && log.trajectory.size() >= 3) {
+    const Trajectory gt = read_trajectory(paths.gt);
+    const TrajectoryEvaluation e = evaluate_trajectory(gt, log.trajectory, {});
+    report["ate_rmse_m"] = e.ate_rmse_m;
+    report["path_length_m"] = e.path_length_m;
+    report["ate_percent_of_path"] = e.ate_percent_of_path;
+    report["ate_pairs"] = e.pairs;
+    report["sim3_scale"] = e.scale;
+    save_top_view_png(paths.out / "trajectory.png", gt, e);
+  }
+  write_json(paths.out / "report.json", report);
+  return report;
+}
+
+}  // namespace facadeslam::apps

@@ -1,0 +1,31 @@
+#pragma once
+// Everything a replay leaves in its output folder: trajectory.txt (every
+// frame with a pose, TUM), keyframes.txt (TUM), map.ply (labelled point
+// cloud), the map file, report.json and, with ground truth, trajectory.png
+// (top view against it). Each file is written atomically.
+#include <filesystem>
+
+#include "apps/replay/replay_log.hpp"
+#include "core/camera/camera.hpp"
+#include "core/util/json.hpp"
+#include "sequences/frame_source.hpp"
+#include "slam/system.hpp"
+
+namespace facadeslam::apps {
+
+struct ReplayOutputPaths {
+  std::filesystem::path out;        // output folder
+  std::filesystem::path map_file;   // where the map goes
+  std::filesystem::path gt;         // ground-truth TUM trajectory, or empty
+};
+
+struct ReplayRunInfo {
+  std::filesystem::path sequence, camera_file;
+  bool synchronous = false;
+};
+
+// Writes the files and returns the report (as written to report.json).
+Json write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
+                          const System& system, const ReadStats& read_stats);
+
+}  // namespace facadeslam::apps
