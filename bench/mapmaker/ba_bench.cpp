@@ -56,15 +56,19 @@ void make_realistic(BaProblem& problem) {
 }
 
 // Local BA: a dense stretch of street (PTAM adds keyframes every ~10 % of
-// the scene depth), the newest keyframe and its 4 nearest neighbours free.
-// The BaProblem is built from local_ba_selection exactly as the map maker
-// would build it from the Map.
-const BaProblem& local_problem() {
-  static const BaProblem problem = [] {
+// the scene depth), the newest keyframe and its `neighbours` nearest
+// neighbours free (the map maker's default: 4), `points` points in the
+// street. The BaProblem is built from local_ba_selection exactly as the map
+// maker would build it from the Map.
+const BaProblem& local_problem(int neighbours = 4, int points = 2700) {
+  static std::map<std::pair<int, int>, BaProblem> cache;
+  const auto key = std::make_pair(neighbours, points);
+  if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  const BaProblem problem = [&] {
     StreetSceneOptions options;
     options.keyframes = 15;
     options.spacing = 0.5;
-    options.points = 2700;
+    options.points = points;
     options.levels = 4;
     const StreetScene scene = make_street_scene(options, camera());
     const BaProblem& full = scene.problem;
@@ -73,7 +77,8 @@ const BaProblem& local_problem() {
     std::vector<ObservationRef> refs;
     for (const BaObservation& obs : full.observations)
       refs.push_back({full.keyframes[obs.keyframe].id, full.points[obs.point].id});
-    const BaSelection selection = local_ba_selection(centres, refs, full.keyframes.back().id);
+    const BaSelection selection =
+        local_ba_selection(centres, refs, full.keyframes.back().id, LocalBaOptions{static_cast<std::size_t>(neighbours)});
 
     BaProblem local;
     std::map<std::size_t, std::size_t> keyframe_index, point_index;  // full -> local
@@ -94,7 +99,7 @@ const BaProblem& local_problem() {
     make_realistic(local);
     return local;
   }();
-  return problem;
+  return cache.emplace(key, problem).first->second;
 }
 
 // Global BA: keyframes every 1.5 m, ~150 new points per keyframe, the first
@@ -277,6 +282,13 @@ void BM_LocalBa(benchmark::State& state) {
   run_ours(state, local_problem(), fixed_iterations(BaLinearSolver::automatic, 1));
 }
 BENCHMARK(BM_LocalBa)->Unit(benchmark::kMillisecond);
+
+// How local BA grows: args = free neighbours, points in the street.
+void BM_LocalBaSize(benchmark::State& state) {
+  run_ours(state, local_problem(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))),
+           fixed_iterations(BaLinearSolver::automatic, 1));
+}
+BENCHMARK(BM_LocalBaSize)->Unit(benchmark::kMillisecond)->ArgsProduct({{2, 4, 8}, {1350, 2700, 5400}});
 
 void BM_LocalBaTextbook(benchmark::State& state) { run_textbook(state, local_problem(), ceres::DENSE_SCHUR, 1); }
 BENCHMARK(BM_LocalBaTextbook)->Unit(benchmark::kMillisecond);
