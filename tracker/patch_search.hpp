@@ -7,10 +7,14 @@
 // image block around the corner (layout: patch_template.hpp); the best one is
 // accepted when its ZMSSD is at most 64 * max_zmssd_per_pixel. PTAM's bound is
 // 500 grey levels^2 per pixel (an RMS difference of ~22 grey levels after
-// removing the mean); zero-meaning makes it blind to brightness offsets.
+// removing the mean); zero-meaning makes it blind to brightness offsets, and
+// the candidate's contrast is scaled to the template's (gain within x2 either
+// way) before comparing, so that exposure and cloud changes are tolerated.
 //
 // Fine: inverse-compositional Lucas-Kanade on translation plus a brightness
-// offset, I(c + d) ~ T(d) + b, starting from the corner. The template's
+// offset, g I(c + d) ~ T(d) + b, starting from the corner, the contrast gain g
+// taken from each iteration's block as in the coarse match (1 unless the
+// contrast differs by more than 25 %). The template's
 // gradients make the 3x3 Gauss-Newton matrix constant, so each iteration is
 // one bilinear pass over the 8x8 image block. It stops when the step is below
 // `subpixel_convergence` search-level pixels; not converging within
@@ -73,7 +77,8 @@ float zmssd_at_subpixel(const PatchTemplate& tpl, const cv::Mat& image, const Ei
 struct SubpixelResult {
   bool converged = false;
   Eigen::Vector2d pixel{0, 0};  // refined position, pixels of `image`
-  float brightness_offset = 0.f;
+  float brightness_offset = 0.f;  // the image block's mean (grey levels)
+  float gain = 1.f;               // the image block's contrast over the template's
   int iterations = 0;
 };
 

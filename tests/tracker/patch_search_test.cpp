@@ -64,7 +64,7 @@ cv::Mat smooth_image(Eigen::Vector2d shift) {
   return image;
 }
 
-TEST(Zmssd, MatchesTheDefinitionAndIgnoresBrightnessOffsets) {
+TEST(Zmssd, MatchesTheDefinitionAndIgnoresBrightnessOffsetAndContrast) {
   cv::Mat image(120, 160, CV_8UC1);
   cv::RNG rng(5);
   rng.fill(image, cv::RNG::UNIFORM, 0, 200);
@@ -75,17 +75,28 @@ TEST(Zmssd, MatchesTheDefinitionAndIgnoresBrightnessOffsets) {
   ASSERT_TRUE(t.valid());
   EXPECT_NEAR(zmssd_at(t, image, 50, 40), 0.0, 1e-5 * t.ssq);
   EXPECT_NEAR(zmssd_at(t, image + 40, 50, 40), 0.0, 1e-5 * t.ssq);  // brightness offset
+  // Contrast: x0.6 (and rounding to 8 bits) still matches, far below the
+  // ZMSSD of any other block.
+  cv::Mat dimmer;
+  image.convertTo(dimmer, CV_8U, 0.6, 10.0);
+  EXPECT_LT(zmssd_at(t, dimmer, 50, 40), 0.02 * t.ssq);
 
-  // Brute force at another place.
+  // Brute force at another place: the block's contrast scaled to the
+  // template's (within x2 either way), then the SSD of the zero-mean values.
   const int x = 90, y = 70;
   double mean = 0;
   for (int j = -4; j < 4; ++j)
     for (int i = -4; i < 4; ++i) mean += image.at<std::uint8_t>(y + j, x + i);
   mean /= 64;
+  double s_ii = 0;
+  for (int j = -4; j < 4; ++j)
+    for (int i = -4; i < 4; ++i) s_ii += std::pow(image.at<std::uint8_t>(y + j, x + i) - mean, 2);
+  const double gain = std::clamp(std::sqrt(t.ssq / s_ii), 0.5, 2.0);
   double expected = 0;
   for (int j = 0; j < 8; ++j)
     for (int i = 0; i < 8; ++i) {
-      const double d = image.at<std::uint8_t>(y + j - 4, x + i - 4) - mean - t.values[static_cast<std::size_t>(j * 8 + i)];
+      const double d =
+          gain * (image.at<std::uint8_t>(y + j - 4, x + i - 4) - mean) - t.values[static_cast<std::size_t>(j * 8 + i)];
       expected += d * d;
     }
   EXPECT_NEAR(zmssd_at(t, image, x, y), expected, 1e-4 * expected);
@@ -123,6 +134,25 @@ TEST(RefineSubpixel, RecoversAKnownSubpixelShift) {
     EXPECT_LT(error, shift.isZero() ? 1e-4 : 0.04) << shift.transpose();
     // The offset is the image block's mean against the zero-mean template.
     EXPECT_NEAR(r.brightness_offset, t.mean + 25.0, 1.0);
+  }
+}
+
+// A cloud or an exposure change: the image at 0.6x the template's contrast.
+TEST(RefineSubpixel, RecoversAShiftUnderAContrastChange) {
+  const cv::Mat reference = smooth_image({0, 0});
+  PyramidOptions options;
+  options.detect_corners = false;
+  const auto pyramid = std::make_shared<const ImagePyramid>(reference, options);
+  const PatchTemplate t = make_patch_template(source_at(pyramid, 0, {80, 60}), Eigen::Matrix2d::Identity());
+  ASSERT_TRUE(t.valid());
+  for (const Eigen::Vector2d& shift : {Eigen::Vector2d(0.3, -0.4), Eigen::Vector2d(-0.7, 0.2)}) {
+    cv::Mat dimmer;
+    smooth_image(shift).convertTo(dimmer, CV_8U, 0.6, 30.0);
+    const SubpixelResult r = refine_subpixel(t, dimmer, {80, 60});
+    ASSERT_TRUE(r.converged) << shift.transpose();
+    EXPECT_LT((r.pixel - Eigen::Vector2d(80, 60) - shift).norm(), 0.06) << shift.transpose();
+    // Bilinear resampling lowers the sampled block's contrast a little more.
+    EXPECT_NEAR(r.gain, 0.57, 0.05);
   }
 }
 
