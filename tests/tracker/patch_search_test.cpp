@@ -115,12 +115,16 @@ TEST(Zmssd, IsInfiniteWhenTheBlockLeavesTheImage) {
   EXPECT_TRUE(std::isinf(zmssd_at_subpixel(t, image, {std::nan(""), 50})));
 }
 
-TEST(RefineSubpixel, RecoversAKnownSubpixelShift) {
-  const cv::Mat reference = smooth_image({0, 0});
+// The template at (80, 60) of the unshifted smooth image, unwarped.
+PatchTemplate smooth_image_template() {
   PyramidOptions options;
   options.detect_corners = false;
-  const auto pyramid = std::make_shared<const ImagePyramid>(reference, options);
-  const PatchTemplate t = make_patch_template(source_at(pyramid, 0, {80, 60}), Eigen::Matrix2d::Identity());
+  const auto pyramid = std::make_shared<const ImagePyramid>(smooth_image({0, 0}), options);
+  return make_patch_template(source_at(pyramid, 0, {80, 60}), Eigen::Matrix2d::Identity());
+}
+
+TEST(RefineSubpixel, RecoversAKnownSubpixelShift) {
+  const PatchTemplate t = smooth_image_template();
   ASSERT_TRUE(t.valid());
   const Eigen::Vector2d shifts[] = {{0.0, 0.0}, {0.5, 0.0}, {0.3, -0.4}, {-0.7, 0.2}, {1.2, 0.9}};
   for (const Eigen::Vector2d& shift : shifts) {
@@ -139,11 +143,7 @@ TEST(RefineSubpixel, RecoversAKnownSubpixelShift) {
 
 // A cloud or an exposure change: the image at 0.6x the template's contrast.
 TEST(RefineSubpixel, RecoversAShiftUnderAContrastChange) {
-  const cv::Mat reference = smooth_image({0, 0});
-  PyramidOptions options;
-  options.detect_corners = false;
-  const auto pyramid = std::make_shared<const ImagePyramid>(reference, options);
-  const PatchTemplate t = make_patch_template(source_at(pyramid, 0, {80, 60}), Eigen::Matrix2d::Identity());
+  const PatchTemplate t = smooth_image_template();
   ASSERT_TRUE(t.valid());
   for (const Eigen::Vector2d& shift : {Eigen::Vector2d(0.3, -0.4), Eigen::Vector2d(-0.7, 0.2)}) {
     cv::Mat dimmer;

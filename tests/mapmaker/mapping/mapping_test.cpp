@@ -9,8 +9,8 @@
 #include "core/map/map.hpp"
 #include "mapmaker/mapping/epipolar_search.hpp"
 #include "mapmaker/mapping/map_ba.hpp"
+#include "tests/tracker/plane_keyframe.hpp"
 #include "tests/tracker/rendered_plane.hpp"
-#include "tracker/reloc/small_blurry_image.hpp"
 
 namespace facadeslam {
 namespace {
@@ -24,12 +24,7 @@ class PlaneKeyFrames : public ::testing::Test {
   }
 
   std::shared_ptr<KeyFrame> add_keyframe(const SE3d& T_c_w) {
-    auto pyramid = std::make_shared<const ImagePyramid>(tracker::test::render(plane_, camera_, T_c_w));
-    auto kf = std::make_shared<KeyFrame>(map_.new_keyframe_id(), 0.0, T_c_w, pyramid, cv::Mat(),
-                                         make_small_blurry_image(*pyramid));
-    kf->set_depth_stats(plane_.plane_depth, 0.1);
-    map_.add_keyframe(kf);
-    return kf;
+    return tracker::test::add_plane_keyframe(map_, plane_, camera_, T_c_w);
   }
 
   // RMS reprojection error (level-0 px) of every measurement in the map as it is now.
