@@ -40,6 +40,8 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
 void read_mapmaker(const ConfigNode& c, MapMakerOptions& m) {
   m.initialisation.min_median_parallax_deg =
       c.get_double("init_min_parallax_deg", Range::positive(45), m.initialisation.min_median_parallax_deg);
+  m.densify_initial_map_min_parallax_deg = c.get_double("init_densify_min_parallax_deg", Range::non_negative(180),
+                                                         m.densify_initial_map_min_parallax_deg);
   m.initialisation.min_points = c.get_int("init_min_points", Range::closed(8, 100000), m.initialisation.min_points);
   m.local_ba_selection.neighbours = static_cast<std::size_t>(
       c.get_int("local_ba_neighbours", Range::closed(1, 100), static_cast<int>(m.local_ba_selection.neighbours)));

@@ -139,7 +139,9 @@ std::vector<std::shared_ptr<MapPoint>> epipolar_new_points(Map& map, const Camer
       const Eigen::Vector3d to_other = T_other_w.inverse().translation() - *p_w;
       const double parallax_deg =
           std::acos(std::clamp(to_new.normalized().dot(to_other.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
-      if (parallax_deg < options.min_parallax_deg) continue;
+      // A level-L match is only good to ~2^L level-0 pixels, so its depth
+      // needs 2^L times the parallax of a level-0 point to be as certain.
+      if (parallax_deg < options.min_parallax_deg * scale) continue;
 
       auto point = std::make_shared<MapPoint>(map.new_point_id(), source,
                                               source_geometry(camera, T_new_w, source, *p_w));

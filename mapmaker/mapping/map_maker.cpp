@@ -55,15 +55,16 @@ std::optional<SE3d> MapMaker::initialise(const TwoViewResult& result, const MapM
   map_.add({kf0, kf1}, points);
   update_depth_stats(*kf0);
   update_depth_stats(*kf1);
-  // The initialiser's points are level-0 corners only. As PTAM does, search
-  // both keyframes' corners at every level against the other keyframe, so
-  // that the first map also has the coarse-level points the tracker's coarse
-  // stage needs to survive fast motion.
-  for (const auto& [newest, other] : {std::pair{kf1, kf0}, std::pair{kf0, kf1}}) {
-    auto more = epipolar_new_points(map_, camera_, *newest, *other, options_.epipolar);
-    map_.add({}, more);
-    points.insert(points.end(), more.begin(), more.end());
-  }
+  // The initialiser's points are level-0 corners only: with enough parallax,
+  // search both keyframes' corners at every level against the other one for
+  // the coarse-level points the tracker's coarse stage needs to survive fast
+  // motion (map_maker_options.hpp).
+  if (result.median_parallax_deg >= options_.densify_initial_map_min_parallax_deg)
+    for (const auto& [newest, other] : {std::pair{kf1, kf0}, std::pair{kf0, kf1}}) {
+      auto more = epipolar_new_points(map_, camera_, *newest, *other, options_.epipolar);
+      map_.add({}, more);
+      points.insert(points.end(), more.begin(), more.end());
+    }
 
   const auto t0 = Clock::now();
   const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt);

@@ -55,6 +55,7 @@ TEST(SlamOptions, ShippedConfigHoldsTheDefaults) {
   const MapMakerOptions &m = loaded.mapmaker, &md = defaults.mapmaker;
   EXPECT_DOUBLE_EQ(m.initialisation.min_median_parallax_deg, md.initialisation.min_median_parallax_deg);
   EXPECT_EQ(m.initialisation.min_points, md.initialisation.min_points);
+  EXPECT_DOUBLE_EQ(m.densify_initial_map_min_parallax_deg, md.densify_initial_map_min_parallax_deg);
   EXPECT_EQ(m.local_ba_selection.neighbours, md.local_ba_selection.neighbours);
   EXPECT_EQ(m.local_ba.max_iterations, md.local_ba.max_iterations);
   EXPECT_EQ(m.global_ba.max_iterations, md.global_ba.max_iterations);
