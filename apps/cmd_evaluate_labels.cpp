@@ -1,6 +1,5 @@
 #include "apps/cmd_evaluate_labels.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,9 +8,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
 #include "core/util/json.hpp"
-#include "semantics/descriptor/genome_io.hpp"
 #include "semantics/evaluation/confusion_plot.hpp"
 #include "semantics/evaluation/label_evaluation.hpp"
 #include "semantics/forest/forest_model.hpp"
@@ -27,23 +26,6 @@ struct Options {
   std::string genome;  // text, file or empty (thesis genome)
   std::filesystem::path json, confusion;
 };
-
-// --genome takes a genome file (0/1 text or .json) or the 211-character
-// 0/1 string itself.
-Genome resolve_genome(const std::string& value) {
-  if (value.empty()) return Genome::thesis_best();
-  std::error_code ec;
-  if (std::filesystem::is_regular_file(value, ec)) return semantics::load_genome(value);
-  bool bits_only = true;
-  for (const char c : value) bits_only = bits_only && (c == '0' || c == '1' || std::isspace(static_cast<unsigned char>(c)));
-  // A genome string with a typo still gets Genome::parse's precise message.
-  if (bits_only || value.size() == static_cast<std::size_t>(Genome::kBits)) return Genome::parse(value, "--genome");
-  std::string shown = value.substr(0, 40);
-  if (value.size() > 40) shown.append("...");
-  std::string message = "--genome: '";
-  message.append(shown).append("' is neither a genome file nor a 211-character 0/1 string");
-  throw Error(message);
-}
 
 std::string percent(double v) {
   if (!std::isfinite(v)) return "   -  ";

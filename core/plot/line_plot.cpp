@@ -128,6 +128,15 @@ LinePlot::LinePlot(int width, int height) : width_(width), height_(height) {
                 std::to_string(height));
 }
 
+void LinePlot::set_y_range(double lo, double hi) {
+  if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) {
+    std::string message = "plot y range: expected finite lo < hi, got ";
+    message.append(std::to_string(lo)).append(" and ").append(std::to_string(hi));
+    throw Error(message);
+  }
+  y_range_ = std::make_pair(lo, hi);
+}
+
 void LinePlot::add_series(std::string name, std::vector<double> x, std::vector<double> y, SeriesStyle style) {
   if (x.size() != y.size())
     throw Error("plot series '" + name + "': " + std::to_string(x.size()) + " x values but " +
@@ -152,6 +161,7 @@ LinePlot::Arrangement LinePlot::arrange() const {
       }
   if (data_x.empty()) data_x = {0.0, 1.0};
   if (data_y.empty()) data_y = {0.0, 1.0};
+  if (y_range_) data_y = {y_range_->first, y_range_->second};
   // A little air so that no line runs along the axes box.
   const auto padded = [](Range r) {
     const double pad = 0.03 * r.span();
@@ -202,6 +212,11 @@ LinePlot::Arrangement LinePlot::arrange() const {
       a.y = {ty.lo, ty.hi};
       a.x_ticks = tx.values;
       a.y_ticks = ty.values;
+      if (y_range_) {
+        // The given range, not widened to the outer ticks.
+        a.y = data_y;
+        a.y_ticks = multiples_inside(ty.step, data_y);
+      }
     }
     int widest = 0;
     for (const double v : a.y_ticks) widest = std::max(widest, text_size(format_tick(v, a.y_step), kTickScale).width);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -35,6 +36,11 @@ class LinePlot {
   void set_y_label(std::string label) { y_label_ = std::move(label); }
   // One data unit is as long on both axes (a top view is not distorted).
   void set_equal_axes(bool equal) { equal_axes_ = equal; }
+  // The y axis shows [lo, hi] (plus the usual bit of air) whatever the data,
+  // ticks at nice values inside; points outside are clipped. For curves of
+  // one quantity (a rate in 0..1) shown side by side. Not with equal axes.
+  // Throws Error unless lo < hi, both finite.
+  void set_y_range(double lo, double hi);
 
   // A series of points (x[i], y[i]); non-finite points are skipped and break
   // the line. Throws Error if x and y differ in length. An empty name keeps
@@ -70,6 +76,7 @@ class LinePlot {
   int width_, height_;
   std::string title_, x_label_, y_label_;
   bool equal_axes_ = false;
+  std::optional<std::pair<double, double>> y_range_;
   std::vector<Series> series_;
 };
 

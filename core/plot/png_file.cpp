@@ -19,7 +19,9 @@ void save_png(const std::filesystem::path& path, const cv::Mat& image) {
   write_file_atomically(path, [&](const std::filesystem::path& tmp) {
     bool written = false;
     try {
-      written = cv::imwrite(tmp.string(), image);
+      // Maximum zlib effort: plots are committed under docs/, and level 9
+      // costs milliseconds on pictures of this size.
+      written = cv::imwrite(tmp.string(), image, {cv::IMWRITE_PNG_COMPRESSION, 9});
     } catch (const cv::Exception& e) {
       fail_file(path, "cannot write the PNG plot (" + e.err + ")");
     }

@@ -123,6 +123,30 @@ TEST(LinePlot, SinglePointWithEqualAxesIsDrawn) {
   EXPECT_TRUE(plot.layout().plot_area.contains(box.tl()));
 }
 
+TEST(LinePlot, FixedYRangePlacesValuesOnItsScale) {
+  // A flat line at 0.2: alone it would sit mid-plot (its range is widened
+  // around the value); on a 0..1 axis it sits at a fifth of the height.
+  LinePlot plot;
+  SeriesStyle red;
+  red.colour = cv::Scalar(0, 0, 255);
+  plot.add_series("", {0.0, 1.0}, {0.2, 0.2}, red);
+  const cv::Rect area = plot.layout().plot_area;
+  const auto height_fraction = [&] {
+    const cv::Rect box = bounding_box_of(plot.render(), cv::Scalar(0, 0, 255));
+    return (area.y + area.height - 1 - (box.y + box.height / 2.0)) / (area.height - 1);
+  };
+  EXPECT_NEAR(height_fraction(), 0.5, 0.02);
+  plot.set_y_range(0.0, 1.0);
+  EXPECT_NEAR(height_fraction(), (0.2 + 0.03) / 1.06, 0.02);  // 3 % of air below 0 and above 1
+}
+
+TEST(LinePlot, BadYRangeIsAnError) {
+  LinePlot plot;
+  EXPECT_THROW(plot.set_y_range(1.0, 1.0), Error);
+  EXPECT_THROW(plot.set_y_range(1.0, 0.0), Error);
+  EXPECT_THROW(plot.set_y_range(0.0, std::nan("")), Error);
+}
+
 TEST(LinePlot, EmptyPlotStillRenders) {
   const cv::Mat image = LinePlot().render();
   EXPECT_EQ(image.size(), cv::Size(1000, 800));

@@ -1,0 +1,222 @@
+#include "apps/cmd_evaluate_invariance.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+
+#include "apps/genome_option.hpp"
+#include "core/util/error.hpp"
+#include "core/util/json.hpp"
+#include "semantics/invariance/image_list.hpp"
+#include "semantics/invariance/invariance_plot.hpp"
+#include "semantics/invariance/invariance_report.hpp"
+#include "semantics/invariance/invariance_suite.hpp"
+#include "semantics/point_descriptors/point_descriptor.hpp"
+
+namespace facadeslam::apps {
+namespace {
+
+namespace fs = std::filesystem;
+using semantics::kInvarianceCases;
+
+constexpr std::size_t kCaseCount = kInvarianceCases.size();
+
+struct Options {
+  std::vector<std::string> images;
+  std::size_t max_images = 0;
+  std::vector<std::string> descriptors{"all"};
+  std::string genome;
+  int step = semantics::kDefaultInvarianceStep;
+  int margin = semantics::kDefaultInvarianceMargin;
+  std::vector<std::string> cases{"all"};
+  std::array<std::vector<double>, kCaseCount> values;  // per case; empty = defaults
+  fs::path json, plot, plot_dir;
+};
+
+std::string option_name(std::string_view case_name) {
+  std::string name = "--";
+  return name.append(case_name);
+}
+
+// "--<option>: <message>" for an Error raised while reading that option.
+[[noreturn]] void fail_option(const std::string& option, const std::string& message) {
+  std::string text = option;
+  throw Error(text.append(": ").append(message));
+}
+
+std::vector<std::string> descriptor_names(const std::vector<std::string>& given) {
+  std::vector<std::string> names;
+  for (const std::string& name : given) {
+    if (name == "all") {
+      for (const std::string_view n : semantics::kPointDescriptorNames) names.emplace_back(n);
+      continue;
+    }
+    names.push_back(name);
+  }
+  std::vector<std::string> unique;
+  for (const std::string& n : names)
+    if (std::find(unique.begin(), unique.end(), n) == unique.end()) unique.push_back(n);
+  return unique;
+}
+
+std::vector<semantics::InvarianceCaseRun> chosen_cases(const Options& o) {
+  std::array<bool, kCaseCount> chosen{};
+  for (const std::string& name : o.cases) {
+    if (name == "all") {
+      chosen.fill(true);
+      continue;
+    }
+    try {
+      const semantics::InvarianceCase id = semantics::case_by_name(name);
+      for (std::size_t k = 0; k < kCaseCount; ++k) chosen[k] = chosen[k] || kInvarianceCases[k].id == id;
+    } catch (const Error& e) {
+      fail_option("--cases", e.what());
+    }
+  }
+  std::vector<semantics::InvarianceCaseRun> runs;
+  for (std::size_t k = 0; k < kCaseCount; ++k) {
+    const auto& info = kInvarianceCases[k];
+    if (!chosen[k]) {
+      if (!o.values[k].empty())
+        fail_option(option_name(info.name), "values given for a case that --cases leaves out");
+      continue;
+    }
+    semantics::InvarianceCaseRun run{info.id, o.values[k].empty() ? semantics::default_case_values(info.id) : o.values[k]};
+    try {
+      semantics::check_case_values(run.id, run.values);
+    } catch (const Error& e) {
+      // The message starts with the case name, which is the option's name.
+      std::string text = "--";
+      throw Error(text.append(e.what()));
+    }
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+std::string rate_text(double v) {
+  if (!std::isfinite(v)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", v);
+  return text;
+}
+
+void print_summary(const semantics::InvarianceResult& r) {
+  std::printf("invariance: %zu images, %zu reference keypoints (grid step %d, margin %d), %.1f s\n", r.images.size(),
+              r.reference_keypoints, r.step, r.margin, r.seconds);
+  for (const auto& c : r.cases) {
+    const auto& info = semantics::case_info(c.id);
+    std::printf("\n%s: match rate per %s\n  %10s", std::string(info.title).c_str(), std::string(info.parameter).c_str(),
+                "");
+    for (const auto& name : r.descriptors) std::printf(" %13s", name.c_str());
+    std::printf("\n");
+    for (std::size_t v = 0; v < c.values.size(); ++v) {
+      std::printf("  %10g", c.values[v]);
+      for (std::size_t d = 0; d < r.descriptors.size(); ++d) std::printf(" %13s", rate_text(c.match_rate[d][v]).c_str());
+      std::printf("\n");
+    }
+  }
+  std::fflush(stdout);
+}
+
+void run(const Options& o) {
+  // Everything cheap is checked before the long run.
+  const semantics::Genome genome = resolve_genome(o.genome);
+  if (o.step < 1) fail_option("--step", "expected a grid step of at least 1 pixel");
+  if (o.margin < 0) fail_option("--margin", "expected a margin of at least 0 pixels");
+  semantics::InvarianceOptions options;
+  options.step = o.step;
+  options.margin = o.margin;
+  options.cases = chosen_cases(o);
+  std::string plot_extension = o.plot.extension().string();
+  for (char& c : plot_extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (!o.plot.empty() && plot_extension != ".png") fail_file(o.plot, "expected a file name ending in .png for the plot");
+
+  std::vector<std::unique_ptr<semantics::PointDescriptor>> owned;
+  for (const std::string& name : descriptor_names(o.descriptors)) {
+    try {
+      owned.push_back(semantics::make_point_descriptor(name, genome));
+    } catch (const Error& e) {
+      fail_option("--descriptor", e.what());
+    }
+  }
+  std::vector<semantics::PointDescriptor*> descriptors;
+  for (const auto& d : owned) descriptors.push_back(d.get());
+  const std::vector<fs::path> inputs(o.images.begin(), o.images.end());
+  const std::vector<fs::path> images = semantics::list_images(inputs, o.max_images);
+
+  const semantics::InvarianceResult result = semantics::run_invariance(images, descriptors, options);
+  print_summary(result);
+  if (!o.json.empty()) {
+    Json report = semantics::to_json(result);
+    report["genome"] = genome.to_string();
+    write_json(o.json, report);
+    spdlog::info("wrote {}", o.json.string());
+  }
+  if (!o.plot.empty()) {
+    semantics::save_invariance_figure(o.plot, result);
+    spdlog::info("wrote {}", o.plot.string());
+  }
+  if (!o.plot_dir.empty())
+    for (const fs::path& written : semantics::save_case_plots(o.plot_dir, result)) spdlog::info("wrote {}", written.string());
+}
+
+}  // namespace
+
+void add_evaluate_invariance_command(CLI::App& evaluate) {
+  auto options = std::make_shared<Options>();
+  auto* cmd = evaluate.add_subcommand(
+      "invariance",
+      "Match rate of each descriptor between images and changed copies of them (blur, rotation, resize, affine tilts, "
+      "light intensity scale and shift, illuminant colour, JPEG)");
+  cmd->add_option("--images", options->images,
+                  "Image files, folders of images, or .txt lists (one image per line; LabelMeFacade names are looked "
+                  "up as images/NAME.jpg beside the list)")
+      ->required();
+  cmd->add_option("--max-images", options->max_images, "Use only the first N images (0 = all)")->capture_default_str();
+  std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames), std::end(semantics::kPointDescriptorNames));
+  names.emplace_back("all");
+  cmd->add_option("--descriptor", options->descriptors, "Descriptors to compare (comma-separated or repeated), or all")
+      ->delimiter(',')
+      ->check(CLI::IsMember(names))
+      ->capture_default_str();
+  cmd->add_option("--genome", options->genome,
+                  "Modular-descriptor genome: a genome file (0/1 text or .json) or the 211-character 0/1 string "
+                  "(default: the thesis' best genome); also sets the SIFT patch size");
+  cmd->add_option("--step", options->step, "Grid step of the reference keypoints in pixels")->capture_default_str();
+  cmd->add_option("--margin", options->margin,
+                  "Pixels around each keypoint that must show the image in both the original and the changed copy")
+      ->capture_default_str();
+  std::string case_list;
+  for (const auto& info : kInvarianceCases) case_list.append(case_list.empty() ? "" : ", ").append(info.name);
+  cmd->add_option("--cases", options->cases, std::string("Cases to run (comma-separated) or all: ").append(case_list))
+      ->delimiter(',')
+      ->capture_default_str();
+  for (std::size_t k = 0; k < kCaseCount; ++k) {
+    const auto& info = kInvarianceCases[k];
+    std::string defaults;
+    for (const double v : semantics::default_case_values(info.id)) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", v);
+      defaults.append(defaults.empty() ? "" : ",").append(text);
+    }
+    std::string help = std::string(info.title);
+    help.append(": values of the ").append(info.parameter).append(" (default ").append(defaults);
+    help.append("; negative values as --").append(info.name).append("=-10,0,10)");
+    cmd->add_option(option_name(info.name), options->values[k], help)->delimiter(',');
+  }
+  cmd->add_option("--json", options->json, "Write the report (every case's values and match rates) to this JSON file");
+  cmd->add_option("--plot", options->plot, "Write all cases as panels of one PNG");
+  cmd->add_option("--plot-dir", options->plot_dir, "Write one PNG per case, DIR/invariance-<case>.png");
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace facadeslam::apps
