@@ -62,9 +62,11 @@ endif()
 
 #
 # FIXTURES names CTest fixtures every discovered test requires (e.g. a
-# set-up test that clears a cache shared by the test processes).
+# set-up test that clears a cache shared by the test processes). RUNS_APP:
+# the tests run the built `facadeslam` binary, whose path they get as
+# FACADESLAM_BINARY (and the program is built after it).
 function(facadeslam_test name)
-  cmake_parse_arguments(ARG "" "LABEL" "SOURCES;DEPS;FIXTURES" ${ARGN})
+  cmake_parse_arguments(ARG "RUNS_APP" "LABEL" "SOURCES;DEPS;FIXTURES" ${ARGN})
   if(NOT ARG_LABEL)
     set(ARG_LABEL unit)
   endif()
@@ -75,6 +77,10 @@ function(facadeslam_test name)
   endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE facadeslam_options ${ARG_DEPS} facadeslam_test_deps)
+  if(ARG_RUNS_APP)
+    target_compile_definitions(${name} PRIVATE FACADESLAM_BINARY="$<TARGET_FILE:facadeslam>")
+    add_dependencies(${name} facadeslam)
+  endif()
   if(FACADESLAM_PCH)
     target_precompile_headers(${name} REUSE_FROM facadeslam_test_pch)
   endif()

@@ -3,23 +3,18 @@
 // eq. III.39): the picture taken under a black-body illuminant of K kelvin
 // instead of 6500 K has each channel multiplied by its own gain.
 //
-// The gains are a short approximation, not a colorimetric table:
-//  - each camera channel is taken to respond at one wavelength, the dominant
-//    wavelength of the sRGB primary (R 611 nm, G 549 nm, B 464 nm);
-//  - the light of a black body at that wavelength follows Planck's law,
-//    B(l, T) ~ l^-5 / (exp(c2 / (l T)) - 1), c2 = hc/k = 1.4388e-2 m K;
-//  - the linear gain of a channel is B(l, K) / B(l, 6500), divided by the
-//    green channel's so that brightness stays about the same (the intensity
-//    cases test brightness on their own);
-//  - the images are 8-bit gamma-encoded (sRGB, gamma ~2.2), so a linear gain
-//    g multiplies the stored values by g^(1/2.2): still a diagonal model.
-// At 3000 K this gives about (R, G, B) x (1.24, 1, 0.68), at 10000 K about
-// (0.94, 1, 1.11): warm and cold light, as expected.
+// The linear-light gains are core/image/black_body.hpp's (the synthetic
+// scenes use the same); the images here are 8-bit gamma-encoded (sRGB, gamma
+// ~2.2), so a linear gain g multiplies the stored values by g^(1/2.2): still
+// a diagonal model. At 3000 K about (R, G, B) x (1.24, 1, 0.68), at 10000 K
+// about (0.94, 1, 1.11).
 #include <opencv2/core.hpp>
+
+#include "core/image/black_body.hpp"
 
 namespace facadeslam::semantics {
 
-inline constexpr double kReferenceKelvin = 6500.0;
+inline constexpr double kReferenceKelvin = kReferenceIlluminantKelvin;
 
 // Gains for the stored 8-bit values, in B, G, R order (OpenCV's channel
 // order); (1, 1, 1) at 6500 K. Throws Error unless 500 <= kelvin <= 100000.

@@ -2,19 +2,9 @@
 
 #include <cmath>
 
+#include "core/image/black_body.hpp"
+
 namespace facadeslam::synth {
-namespace {
-
-constexpr double kReferenceTemperature = 6500.0;
-
-// Planck's law without the constant factors that cancel in a ratio at one
-// wavelength: 1 / (exp(c2 / (lambda T)) - 1), c2 = h c / k_B.
-double relative_radiance(double wavelength_m, double temperature) {
-  constexpr double c2 = 1.438776877e-2;  // m K
-  return 1.0 / std::expm1(c2 / (wavelength_m * temperature));
-}
-
-}  // namespace
 
 Illumination illumination_at(const std::vector<LightingKey>& keys, double t) {
   if (keys.empty()) return {};
@@ -30,18 +20,9 @@ Illumination illumination_at(const std::vector<LightingKey>& keys, double t) {
   return {(1.0 - w) * a.scale + w * b.scale, (1.0 - w) * a.shift + w * b.shift, 1e6 / mired};
 }
 
-cv::Vec3d illuminant_gains_bgr(double temperature) {
-  const double wavelengths_bgr[] = {465e-9, 550e-9, 610e-9};
-  cv::Vec3d ratio;
-  for (int k = 0; k < 3; ++k)
-    ratio[k] = relative_radiance(wavelengths_bgr[k], temperature) /
-               relative_radiance(wavelengths_bgr[k], kReferenceTemperature);
-  return ratio / ratio[1];
-}
-
 void apply_illumination(cv::Mat& colour, const Illumination& illumination) {
   CV_Assert(colour.type() == CV_32FC3);
-  const cv::Vec3d gains = illuminant_gains_bgr(illumination.temperature) * illumination.scale;
+  const cv::Vec3d gains = black_body_gains_bgr(illumination.temperature) * illumination.scale;
   const float g[3] = {static_cast<float>(gains[0]), static_cast<float>(gains[1]), static_cast<float>(gains[2])};
   const float shift = static_cast<float>(illumination.shift);
   for (int y = 0; y < colour.rows; ++y) {

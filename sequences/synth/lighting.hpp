@@ -7,11 +7,8 @@
 // combined here as c'_k = a g_k c_k + o1 for each channel k, applied to the
 // rendered 8-bit-range values before noise and quantisation.
 //
-// The colour-temperature gains are the ratio of Planck's black-body radiance
-// at temperature T to that at the 6500 K reference, at one representative
-// wavelength per channel (R 610 nm, G 550 nm, B 465 nm), normalised so that
-// green keeps its value: 6500 K is neutral (1, 1, 1), lower temperatures are
-// warmer (3800 K gives about r 1.31, b 0.60), higher ones bluer.
+// The colour-temperature gains are core/image/black_body.hpp's: the rendered
+// values are linear light, so they apply as they are.
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -32,11 +29,8 @@ struct Illumination {
 // when there are no keys.
 Illumination illumination_at(const std::vector<LightingKey>& keys, double t);
 
-// Per-channel gains (B, G, R order, as OpenCV stores colour) for an
-// illuminant of `temperature` kelvin.
-cv::Vec3d illuminant_gains_bgr(double temperature);
-
-// c'_k = scale g_k c_k + shift on a CV_32FC3 BGR image, in place.
+// c'_k = scale g_k c_k + shift on a CV_32FC3 BGR image, in place, with the
+// gains g of black_body_gains_bgr(temperature).
 void apply_illumination(cv::Mat& colour, const Illumination& illumination);
 
 }  // namespace facadeslam::synth

@@ -1,26 +1,27 @@
 #include <gtest/gtest.h>
 
+#include "core/image/black_body.hpp"
 #include "sequences/synth/lighting.hpp"
 
 namespace facadeslam::synth {
 namespace {
 
 TEST(Lighting, ReferenceTemperatureIsNeutral) {
-  const cv::Vec3d g = illuminant_gains_bgr(6500.0);
+  const cv::Vec3d g = black_body_gains_bgr(6500.0);
   EXPECT_NEAR(g[0], 1.0, 1e-12);
   EXPECT_NEAR(g[1], 1.0, 1e-12);
   EXPECT_NEAR(g[2], 1.0, 1e-12);
 }
 
 TEST(Lighting, LowTemperaturesAreWarmHighOnesBlue) {
-  const cv::Vec3d warm = illuminant_gains_bgr(3800.0), blue = illuminant_gains_bgr(12000.0);
+  const cv::Vec3d warm = black_body_gains_bgr(3800.0), blue = black_body_gains_bgr(12000.0);
   EXPECT_DOUBLE_EQ(warm[1], 1.0);  // green keeps its value
   EXPECT_GT(warm[2], 1.2);         // red up
   EXPECT_LT(warm[0], 0.7);         // blue down
   EXPECT_LT(blue[2], 1.0);
   EXPECT_GT(blue[0], 1.0);
   // Monotonic in temperature.
-  EXPECT_GT(illuminant_gains_bgr(3000.0)[2], warm[2]);
+  EXPECT_GT(black_body_gains_bgr(3000.0)[2], warm[2]);
 }
 
 TEST(Lighting, KeysInterpolateAndHoldAtTheEnds) {
@@ -39,7 +40,7 @@ TEST(Lighting, AppliesTheDiagonalModel) {
   cv::Mat colour(2, 2, CV_32FC3, cv::Scalar(100, 100, 100));
   const Illumination light{0.5, 10.0, 3800.0};
   apply_illumination(colour, light);
-  const cv::Vec3d g = illuminant_gains_bgr(3800.0);
+  const cv::Vec3d g = black_body_gains_bgr(3800.0);
   const cv::Vec3f p = colour.at<cv::Vec3f>(1, 1);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], 0.5 * g[k] * 100.0 + 10.0, 1e-3);
 }
