@@ -78,15 +78,15 @@ int run_replay(ReplayOptions o) {
   if (log.frames == 0) throw Error(o.sequence.string() + ": the sequence has no frames");
   system.finish();
 
-  const Json report =
+  const ReplayOutputs outputs =
       write_replay_outputs({o.out, o.save_map.empty() ? o.out / "map.fslmap" : o.save_map, o.gt},
                            {o.sequence, o.camera, o.sync}, log, system, source->stats());
   std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu keyframes, %zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map().keyframe_count(),
-              static_cast<std::size_t>(report.find("points")->as_double()), o.out.string().c_str());
-  if (const Json* ate = report.find("ate_rmse_m"))
+              outputs.cloud_points, o.out.string().c_str());
+  if (const Json* ate = outputs.report.find("ate_rmse_m"))
     std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path\n", ate->as_double(),
-                report.find("ate_percent_of_path")->as_double());
+                outputs.report.find("ate_percent_of_path")->as_double());
   if (!system.initialised()) {
     std::fprintf(stderr, "facadeslam: the map was never initialised (not enough parallax?); see %s\n",
                  (o.out / "report.json").string().c_str());

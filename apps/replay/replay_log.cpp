@@ -4,13 +4,6 @@
 
 namespace facadeslam::apps {
 
-Eigen::Isometry3d to_isometry(const SE3d& T_w_c) {
-  Eigen::Isometry3d iso = Eigen::Isometry3d::Identity();
-  iso.linear() = T_w_c.rotation_matrix();
-  iso.translation() = T_w_c.translation();
-  return iso;
-}
-
 Json timing_summary(std::vector<double> ms) {
   Json j = Json::object();
   if (ms.empty()) return j;
@@ -27,7 +20,7 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
   ++frames;
   if (r.has_pose) {
     ++tracked;
-    trajectory.push_back({r.timestamp, to_isometry(r.T_c_w.inverse())});
+    trajectory.push_back({r.timestamp, r.T_c_w.inverse().isometry()});
   } else if (initialised) {
     ++lost;
   }

@@ -26,6 +26,4 @@ struct ReplayLog {
 // median_ms, p95_ms and mean_ms of `ms` (an empty object when empty).
 Json timing_summary(std::vector<double> ms);
 
-Eigen::Isometry3d to_isometry(const SE3d& T_w_c);
-
 }  // namespace facadeslam::apps

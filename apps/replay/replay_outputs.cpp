@@ -2,8 +2,6 @@
 
 #include <shared_mutex>
 
-#include <spdlog/spdlog.h>
-
 #include "core/map/map_io.hpp"
 #include "core/map/point_cloud_writer.hpp"
 #include "core/trajectory/metrics.hpp"
@@ -17,7 +15,7 @@ Trajectory keyframe_trajectory(const Map& map) {
   Trajectory keyframes;
   const auto kfs = map.keyframes();
   std::shared_lock lock(map.mutex());
-  for (const auto& kf : kfs) keyframes.push_back({kf->timestamp(), to_isometry(kf->T_c_w().inverse())});
+  for (const auto& kf : kfs) keyframes.push_back({kf->timestamp(), kf->T_c_w().inverse().isometry()});
   return keyframes;
 }
 
@@ -33,7 +31,7 @@ Json mapping_summary(const MapMakerStats& stats) {
 
 }  // namespace
 
-Json write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
+ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
                           const System& system, const ReadStats& read_stats) {
   std::filesystem::create_directories(paths.out);
   write_tum_trajectory(paths.out / "trajectory.txt", log.trajectory);
@@ -70,7 +68,7 @@ Json write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& i
     save_top_view_png(paths.out / "trajectory.png", gt, e);
   }
   write_json(paths.out / "report.json", report);
-  return report;
+  return {report, cloud_points};
 }
 
 }  // namespace facadeslam::apps

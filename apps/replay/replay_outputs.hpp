@@ -24,8 +24,13 @@ struct ReplayRunInfo {
   bool synchronous = false;
 };
 
-// Writes the files and returns the report (as written to report.json).
-Json write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
+struct ReplayOutputs {
+  Json report;                   // as written to report.json
+  std::size_t cloud_points = 0;  // points written to map.ply
+};
+
+// Writes the files.
+ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
                           const System& system, const ReadStats& read_stats);
 
 }  // namespace facadeslam::apps

@@ -88,6 +88,14 @@ class SE3 {
     return m;
   }
 
+  // As an Eigen isometry (what trajectories and the renderer store).
+  Eigen::Transform<T, 3, Eigen::Isometry> isometry() const {
+    Eigen::Transform<T, 3, Eigen::Isometry> iso = Eigen::Transform<T, 3, Eigen::Isometry>::Identity();
+    iso.linear() = rotation_.matrix();
+    iso.translation() = translation_;
+    return iso;
+  }
+
   // The top three rows [R | t].
   Matrix3x4 matrix3x4() const {
     Matrix3x4 m;

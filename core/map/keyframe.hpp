@@ -23,6 +23,9 @@
 namespace facadeslam {
 
 // Where a map point was seen in a keyframe.
+// The optical axis (the camera's +z) in world coordinates: the third row of R_c_w.
+inline Eigen::Vector3d optical_axis_w(const SE3d& T_c_w) { return T_c_w.rotation_matrix().row(2).transpose(); }
+
 struct Measurement {
   int level = 0;                   // pyramid level it was found at
   Eigen::Vector2d pixel{0, 0};     // level-0 pixel coordinates
@@ -43,6 +46,7 @@ class KeyFrame {
   const SE3d& T_c_w() const { return T_c_w_; }
   void set_T_c_w(const SE3d& T_c_w) { T_c_w_ = T_c_w; }
   Eigen::Vector3d centre_w() const { return T_c_w_.inverse().translation(); }
+  Eigen::Vector3d optical_axis_w() const { return facadeslam::optical_axis_w(T_c_w_); }
 
   const std::shared_ptr<const ImagePyramid>& pyramid() const { return pyramid_; }
   const cv::Mat& colour() const { return colour_; }           // 8-bit BGR, may be empty

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <shared_mutex>
 
+#include "mapmaker/mapping/new_point_candidates.hpp"
 #include "mapmaker/mapping/point_geometry.hpp"
 
 namespace facadeslam {
@@ -44,31 +45,23 @@ std::vector<std::shared_ptr<MapPoint>> depth_prior_points(Map& map, const Camera
   if (measured.empty()) return {};
 
   std::vector<std::shared_ptr<MapPoint>> created;
-  const double min_d2 = options.min_distance_to_measurement * options.min_distance_to_measurement;
   for (int level = 0; level < kPyramidLevels; ++level) {
     const int wanted = options.max_points_per_level[static_cast<std::size_t>(level)];
     if (wanted <= 0) continue;
-    // Keep away from measurements at this level or the next coarser one (as
-    // the epipolar search does) and from the points made here.
-    std::vector<Eigen::Vector2d> taken;
-    for (const auto& [id, m] : keyframe.measurements())
-      if (m.level == level || m.level == level + 1) taken.push_back(ImagePyramid::level0_to_level(m.pixel, level));
-    std::vector<Corner> corners = keyframe.pyramid()->level(level).corners;
-    std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.score > b.score; });
+    NewPointCandidates candidates(keyframe, level, options.min_distance_to_measurement);
     int made = 0;
-    for (const Corner& c : corners) {
+    for (const Corner& c : candidates.corners()) {
       if (made >= wanted) break;
       const Eigen::Vector2d at(c.x, c.y);
-      if (std::any_of(taken.begin(), taken.end(), [&](const auto& t) { return (t - at).squaredNorm() < min_d2; }))
-        continue;
+      if (candidates.near_taken(at)) continue;
       const Eigen::Vector2d pixel0 = ImagePyramid::level_to_level0(at, level);
       const double depth = prior_depth(measured, pixel0, options.depth_neighbours);
       // unproject() gives the ray on the z = 1 plane, so `depth` scales it to z = depth.
-      const Eigen::Vector3d p_w = T_c_w.inverse() * (camera.unproject(pixel0) * depth);;
+      const Eigen::Vector3d p_w = T_c_w.inverse() * (camera.unproject(pixel0) * depth);
       const PatchSource source{keyframe.id(), keyframe.pyramid(), level, pixel0};
       auto point = std::make_shared<MapPoint>(map.new_point_id(), source, source_geometry(camera, T_c_w, source, p_w));
       keyframe.measurements()[point->id()] = {level, pixel0, true};
-      taken.push_back(at);
+      candidates.take(at);
       created.push_back(std::move(point));
       ++made;
     }

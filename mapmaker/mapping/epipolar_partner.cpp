@@ -4,14 +4,15 @@
 #include <limits>
 #include <numbers>
 
+#include "core/map/keyframe.hpp"
+
 namespace facadeslam {
 
 std::optional<std::size_t> choose_epipolar_partner(const SE3d& T_new_w, double new_mean_depth,
                                                    const std::vector<SE3d>& others,
                                                    const EpipolarPartnerOptions& options) {
-  // The optical axis in the world is the third row of R_c_w.
   const Eigen::Vector3d centre = T_new_w.inverse().translation();
-  const Eigen::Vector3d axis = T_new_w.rotation_matrix().row(2).transpose();
+  const Eigen::Vector3d axis = optical_axis_w(T_new_w);
   const double min_baseline = options.min_baseline * new_mean_depth;
   const double min_cos = std::cos(options.max_axis_angle_deg * std::numbers::pi / 180.0);
 
@@ -22,7 +23,7 @@ std::optional<std::size_t> choose_epipolar_partner(const SE3d& T_new_w, double n
   for (std::size_t i = 0; i < others.size(); ++i) {
     const double distance = (others[i].inverse().translation() - centre).norm();
     const bool baseline = distance >= min_baseline;
-    const bool shares_view = others[i].rotation_matrix().row(2).dot(axis.transpose()) >= min_cos;
+    const bool shares_view = optical_axis_w(others[i]).dot(axis) >= min_cos;
     const int tier = baseline && shares_view ? 0 : baseline ? 1 : 2;
     for (int t = tier; t < 3; ++t)
       if (distance < best_distance[t]) {

@@ -6,6 +6,7 @@
 
 #include <Eigen/SVD>
 
+#include "mapmaker/mapping/new_point_candidates.hpp"
 #include "mapmaker/mapping/point_geometry.hpp"
 #include "tracker/patch_search.hpp"
 #include "tracker/patch_warp.hpp"
@@ -65,29 +66,13 @@ std::vector<std::shared_ptr<MapPoint>> epipolar_new_points(Map& map, const Camer
 
   for (int level = 0; level < kPyramidLevels; ++level) {
     const double scale = static_cast<double>(1 << level);
-    const auto& new_level = newest.pyramid()->level(level);
     const auto& other_level = other.pyramid()->level(level);
-
-    // Existing measurements of the new keyframe at this level or the next
-    // coarser one, to keep away from (PTAM's ThinCandidates). Finer
-    // measurements must not count: a few hundred level-0 points, each
-    // blocking min_distance level pixels (8 level-0 pixels at level 1, 32 at
-    // level 3), would cover the coarse levels entirely, leaving the map
-    // without the coarse points the tracker's coarse stage searches.
-    std::vector<Eigen::Vector2d> taken;
-    for (const auto& [id, m] : newest.measurements())
-      if (m.level == level || m.level == level + 1) taken.push_back(ImagePyramid::level0_to_level(m.pixel, level));
-
-    std::vector<Corner> corners = new_level.corners;
-    std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.score > b.score; });
+    NewPointCandidates candidates(newest, level, options.min_distance_to_measurement);
     int tried = 0;
-    for (const Corner& c : corners) {
+    for (const Corner& c : candidates.corners()) {
       if (tried >= options.max_candidates_per_level[static_cast<std::size_t>(level)]) break;
       const Eigen::Vector2d at(c.x, c.y);
-      const bool near_existing = std::any_of(taken.begin(), taken.end(), [&](const Eigen::Vector2d& t) {
-        return (t - at).squaredNorm() < options.min_distance_to_measurement * options.min_distance_to_measurement;
-      });
-      if (near_existing) continue;
+      if (candidates.near_taken(at)) continue;
       ++tried;
       ++local.candidates;
 
@@ -147,7 +132,7 @@ std::vector<std::shared_ptr<MapPoint>> epipolar_new_points(Map& map, const Camer
                                               source_geometry(camera, T_new_w, source, *p_w));
       newest.measurements()[point->id()] = {level, pixel0, true};
       other.measurements()[point->id()] = {level, other_pixel0, false};
-      taken.push_back(at);
+      candidates.take(at);
       created.push_back(std::move(point));
       ++local.triangulated;
       ++local.triangulated_per_level[static_cast<std::size_t>(level)];

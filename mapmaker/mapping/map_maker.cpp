@@ -146,7 +146,6 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   update_depth_stats(*kf);
 
   std::vector<std::shared_ptr<MapPoint>> created;
-  const bool turning = options_.depth_prior_points && candidate.turned_on_the_spot;
   if (const auto other = epipolar_partner(*kf)) {
     EpipolarSearchStats es;
     created = epipolar_new_points(map_, camera_, *kf, *other, options_.epipolar, &es);
@@ -158,7 +157,7 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
         kf->id(), candidate.frame_index, candidate.measurements.size(), other->id(), es.candidates, es.matched,
         es.triangulated, by_level[0], by_level[1], by_level[2], by_level[3]);
   }
-  if (turning) {
+  if (options_.depth_prior_points && candidate.turned_on_the_spot) {
     auto more = depth_prior_points(map_, camera_, *kf, options_.depth_prior);
     spdlog::debug("keyframe {} (frame {}): turning on the spot, {} points at a prior depth", kf->id(),
                   candidate.frame_index, more.size());

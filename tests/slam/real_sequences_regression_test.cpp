@@ -34,17 +34,7 @@ namespace fs = std::filesystem;
 test::SlamRunLog run_folder(System& system, const fs::path& folder) {
   test::SlamRunLog log;
   auto source = open_sequence(folder, SequenceOptions{});
-  while (auto frame = source->next()) {
-    FrameReport r = system.process(frame->index, frame->timestamp, frame->image);
-    if (r.has_pose) {
-      Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
-      const SE3d inverse = r.T_c_w.inverse();
-      T_w_c.linear() = inverse.rotation_matrix();
-      T_w_c.translation() = inverse.translation();
-      log.estimate.push_back({r.timestamp, T_w_c});
-    }
-    log.frames.push_back(std::move(r));
-  }
+  while (auto frame = source->next()) log.add(system.process(frame->index, frame->timestamp, frame->image));
   system.finish();
   return log;
 }
@@ -105,10 +95,7 @@ TEST(RealSequenceRegression, TempleRingCentresWithinTwoPercentOfTheRingDiameter)
     const auto it = cameras.find(frame->source.filename().string());
     ASSERT_NE(it, cameras.end()) << frame->source << " has no camera in templeR_par.txt";
     const SE3d T_w_c = it->second.inverse();
-    Eigen::Isometry3d iso = Eigen::Isometry3d::Identity();
-    iso.linear() = T_w_c.rotation_matrix();
-    iso.translation() = T_w_c.translation();
-    gt.push_back({frame->timestamp, iso});
+    gt.push_back({frame->timestamp, T_w_c.isometry()});
     centres.push_back(T_w_c.translation());
   }
   ASSERT_GE(centres.size(), 3u);

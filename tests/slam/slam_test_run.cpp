@@ -45,14 +45,16 @@ double percentile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
 }
 
-Eigen::Isometry3d to_isometry(const SE3d& T_w_c) {
-  Eigen::Isometry3d iso = Eigen::Isometry3d::Identity();
-  iso.linear() = T_w_c.rotation_matrix();
-  iso.translation() = T_w_c.translation();
-  return iso;
-}
-
 }  // namespace
+
+void SlamRunLog::add(FrameReport report) {
+  if (report.has_pose) estimate.push_back({report.timestamp, report.T_c_w.inverse().isometry()});
+  if (report.status == FrameStatus::tracking || report.status == FrameStatus::relocalised) {
+    const StageTimings& t = report.tracking.timings;
+    tracker_ms.push_back(report.pyramid_ms + t.coarse_ms + t.fine_ms + t.pose_ms + t.relocalise_ms);
+  }
+  frames.push_back(std::move(report));
+}
 
 double SlamRunLog::tracker_ms_median() const { return percentile(tracker_ms, 0.5); }
 double SlamRunLog::tracker_ms_p95() const { return percentile(tracker_ms, 0.95); }
@@ -61,13 +63,7 @@ void run_frames(System& system, SceneFrames& scene, int first, int last, SlamRun
   for (int i = first; i < last; ++i) {
     cv::Mat image = scene.render(i);
     if (filter) image = filter(i, std::move(image));
-    FrameReport r = system.process(static_cast<std::size_t>(i), scene.timestamp(i), image);
-    if (r.has_pose) log.estimate.push_back({r.timestamp, to_isometry(r.T_c_w.inverse())});
-    if (r.status == FrameStatus::tracking || r.status == FrameStatus::relocalised) {
-      const StageTimings& t = r.tracking.timings;
-      log.tracker_ms.push_back(r.pyramid_ms + t.coarse_ms + t.fine_ms + t.pose_ms + t.relocalise_ms);
-    }
-    log.frames.push_back(std::move(r));
+    log.add(system.process(static_cast<std::size_t>(i), scene.timestamp(i), image));
   }
 }
 

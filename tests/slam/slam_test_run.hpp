@@ -43,6 +43,9 @@ struct SlamRunLog {
   Trajectory estimate;              // camera-to-world of the frames with a pose
   std::vector<double> tracker_ms;   // pyramid + FAST + coarse + fine + pose (+ relocalisation) per tracked frame
 
+  // Records one processed frame (its pose, if any, and its tracker time).
+  void add(FrameReport report);
+
   // Index of the frame the map was initialised at, or -1.
   int initialised_at() const;
   // Frames after initialisation (or after the first pose, for a loaded map)

@@ -266,10 +266,10 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
   if (frames < static_cast<std::size_t>(std::min(options_.keyframe_min_frames, options_.keyframe_min_frames_turning)))
     return KeyFrameReason::none;
   // A keyframe near the camera (in units of its scene depth) that looks the
-  // same way (optical axes: the third rows of R_c_w) already covers this
-  // view. Near keyframes that all look elsewhere: the camera has turned.
+  // same way already covers this view. Near keyframes that all look
+  // elsewhere: the camera has turned.
   const Eigen::Vector3d centre = result.T_c_w.inverse().translation();
-  const Eigen::Vector3d axis = result.T_c_w.rotation_matrix().row(2).transpose();
+  const Eigen::Vector3d axis = optical_axis_w(result.T_c_w);
   const double min_cos = std::cos(options_.keyframe_min_angle_deg * std::numbers::pi / 180.0);
   // After a turn the newest keyframes hold depth-prior points: the first
   // small step away gives them a baseline, so it makes a keyframe sooner.
@@ -282,7 +282,7 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
     const double distance = (kf->centre_w() - centre).norm() / std::max(kf->mean_depth(), 1e-9);
     if (distance > min_distance) continue;
     near = true;
-    if (kf->T_c_w().rotation_matrix().row(2).dot(axis.transpose()) >= min_cos) return KeyFrameReason::none;
+    if (kf->optical_axis_w().dot(axis) >= min_cos) return KeyFrameReason::none;
   }
   if (near) return frames >= static_cast<std::size_t>(options_.keyframe_min_frames_turning) ? KeyFrameReason::turned
                                                                                             : KeyFrameReason::none;
