@@ -97,6 +97,11 @@ TEST(SlamOptions, RejectsBadValues) {
               HasSubstr("epipolar_partner_max_angle_deg"));
   EXPECT_THAT(load_error("mapmaker:\n  epipolar_partner_min_baseline: -1\n"),
               HasSubstr("epipolar_partner_min_baseline"));
+  EXPECT_THAT(load_error("tracker:\n  good_found: 0\n"), HasSubstr("good_found"));
+  EXPECT_THAT(load_error("tracker:\n  keyframe_min_frames_turning: 0\n"), HasSubstr("keyframe_min_frames_turning"));
+  EXPECT_THAT(load_error("tracker:\n  keyframe_distance_after_turn: 2\n"), HasSubstr("keyframe_distance_after_turn"));
+  EXPECT_THAT(load_error("mapmaker:\n  init_densify_min_parallax_deg: -1\n"),
+              HasSubstr("init_densify_min_parallax_deg"));
 }
 
 }  // namespace
