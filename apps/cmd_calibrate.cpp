@@ -18,6 +18,8 @@
 #include "core/util/json.hpp"
 
 namespace facadeslam::apps {
+// Named, so that a unity build can hold every command's Options and run().
+namespace calibrate_command {
 namespace {
 
 struct Options {
@@ -90,8 +92,10 @@ std::string check_positive_length(const std::string& text) {
 }
 
 }  // namespace
+}  // namespace calibrate_command
 
 void add_calibrate_command(CLI::App& app) {
+  using namespace calibrate_command;
   auto options = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "calibrate",

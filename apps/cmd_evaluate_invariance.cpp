@@ -22,6 +22,8 @@
 #include "semantics/point_descriptors/point_descriptor.hpp"
 
 namespace facadeslam::apps {
+// Named, so that a unity build can hold every command's Options and run().
+namespace invariance_command {
 namespace {
 
 namespace fs = std::filesystem;
@@ -170,8 +172,10 @@ void run(const Options& o) {
 }
 
 }  // namespace
+}  // namespace invariance_command
 
 void add_evaluate_invariance_command(CLI::App& evaluate) {
+  using namespace invariance_command;
   auto options = std::make_shared<Options>();
   auto* cmd = evaluate.add_subcommand(
       "invariance",

@@ -17,6 +17,8 @@
 #include "semantics/point_descriptors/point_descriptor.hpp"
 
 namespace facadeslam::apps {
+// Named, so that a unity build can hold every command's Options and run().
+namespace labels_command {
 namespace {
 
 using semantics::Genome;
@@ -76,8 +78,10 @@ void run(Options& o) {
 }
 
 }  // namespace
+}  // namespace labels_command
 
 void add_evaluate_labels_command(CLI::App& evaluate) {
+  using namespace labels_command;
   auto options = std::make_shared<Options>();
   auto& e = options->evaluation;
   auto* cmd = evaluate.add_subcommand(

@@ -13,6 +13,8 @@
 #include "core/util/json.hpp"
 
 namespace facadeslam::apps {
+// Named, so that a unity build can hold every command's Options and run().
+namespace trajectory_command {
 namespace {
 
 struct Options {
@@ -69,8 +71,10 @@ void run(const Options& o) {
 }
 
 }  // namespace
+}  // namespace trajectory_command
 
 void add_evaluate_trajectory_command(CLI::App& evaluate) {
+  using namespace trajectory_command;
   auto options = std::make_shared<Options>();
   auto* cmd = evaluate.add_subcommand(
       "trajectory", "ATE and RPE of an estimated trajectory against ground truth (TUM or KITTI files)");

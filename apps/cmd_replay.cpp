@@ -18,6 +18,8 @@
 #include "slam/system.hpp"
 
 namespace facadeslam::apps {
+// Named, so that a unity build can hold every command's Options and run().
+namespace replay_command {
 namespace {
 
 namespace fs = std::filesystem;
@@ -96,8 +98,10 @@ int run_replay(ReplayOptions o) {
 }
 
 }  // namespace
+}  // namespace replay_command
 
 void add_replay_command(CLI::App& app) {
+  using namespace replay_command;
   auto options = std::make_shared<ReplayOptions>();
   auto* cmd = app.add_subcommand("replay", "Run SLAM headless over an image sequence (default: the embedded demo)");
   cmd->add_option("sequence", options->sequence, "Image folder, TUM rgb.txt list or video file");

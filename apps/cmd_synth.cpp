@@ -16,6 +16,8 @@
 #include "sequences/synth/synthesize.hpp"
 
 namespace facadeslam::apps {
+// Named, so that a unity build can hold every command's Options and run().
+namespace synth_command {
 namespace {
 
 struct SynthCliOptions {
@@ -70,8 +72,10 @@ void run(const SynthCliOptions& o) {
 }
 
 }  // namespace
+}  // namespace synth_command
 
 void add_synth_command(CLI::App& app) {
+  using namespace synth_command;
   auto o = std::make_shared<SynthCliOptions>();
   auto* cmd = app.add_subcommand(
       "synth", "Render a synthetic street sequence from real facade photos: colour, labels, depth, ground truth");

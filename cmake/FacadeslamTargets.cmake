@@ -4,6 +4,14 @@ add_library(facadeslam_options INTERFACE)
 target_compile_options(facadeslam_options INTERFACE -Wall -Wextra -Wpedantic -Werror)
 target_include_directories(facadeslam_options INTERFACE ${PROJECT_SOURCE_DIR})
 
+if(CMAKE_UNITY_BUILD)
+  # A unity build includes each .cpp into a batch file, so GCC takes a class
+  # defined in a .cpp with a member of an anonymous-namespace type (a
+  # pimpl's vertex struct, say) for a header-defined class and warns; in a
+  # .cpp that is what we mean.
+  target_compile_options(facadeslam_options INTERFACE -Wno-subobject-linkage)
+endif()
+
 if(FACADESLAM_SANITIZE STREQUAL "address")
   set(_fs_san -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
 elseif(FACADESLAM_SANITIZE STREQUAL "thread")

@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 
 namespace facadeslam {
@@ -29,7 +30,7 @@ Eigen::Isometry3d aligned_pose(const Sim3Alignment& a, const Eigen::Isometry3d& 
 
 double rotation_angle_deg(const Eigen::Matrix3d& R) {
   // Through the quaternion: acos of the trace loses precision at small angles.
-  return Eigen::AngleAxisd(Eigen::Quaterniond(R).normalized()).angle() * 180.0 / std::numbers::pi;
+  return rad_to_deg(Eigen::AngleAxisd(Eigen::Quaterniond(R).normalized()).angle());
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 namespace facadeslam {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) { throw Error("bundle adjustment: " + what); }
+[[noreturn]] void fail_problem(const std::string& what) { throw Error("bundle adjustment: " + what); }
 
 bool finite_pose(const SE3d& pose) {
   return pose.unit_quaternion().coeffs().allFinite() && pose.translation().allFinite();
@@ -17,21 +17,21 @@ bool finite_pose(const SE3d& pose) {
 void validate_scale_anchor(const BaProblem& problem, const BaScaleAnchor& anchor) {
   const std::size_t n = problem.keyframes.size();
   if (anchor.keyframe >= n || anchor.reference >= n)
-    fail("the scale anchor names keyframe index " + std::to_string(anchor.keyframe) + " and reference " +
+    fail_problem("the scale anchor names keyframe index " + std::to_string(anchor.keyframe) + " and reference " +
          std::to_string(anchor.reference) + ", expected indices below the " + std::to_string(n) +
          " keyframes");
   if (anchor.keyframe == anchor.reference)
-    fail("the scale anchor's keyframe and reference must be two different keyframes");
+    fail_problem("the scale anchor's keyframe and reference must be two different keyframes");
   const BaKeyFrame& reference = problem.keyframes[anchor.reference];
   const BaKeyFrame& keyframe = problem.keyframes[anchor.keyframe];
-  if (!reference.fixed) fail("the scale anchor's reference keyframe (index " +
+  if (!reference.fixed) fail_problem("the scale anchor's reference keyframe (index " +
                              std::to_string(anchor.reference) + ") must be fixed");
-  if (keyframe.fixed) fail("the scale anchor's keyframe (index " + std::to_string(anchor.keyframe) +
+  if (keyframe.fixed) fail_problem("the scale anchor's keyframe (index " + std::to_string(anchor.keyframe) +
                            ") must be free: a fixed keyframe already fixes the scale");
   const double distance =
       (keyframe.T_c_w.inverse().translation() - reference.T_c_w.inverse().translation()).norm();
   if (!(distance > 1e-9))
-    fail("the scale anchor's keyframes have the same camera centre: their distance cannot fix the scale");
+    fail_problem("the scale anchor's keyframes have the same camera centre: their distance cannot fix the scale");
 }
 
 }  // namespace
@@ -39,11 +39,11 @@ void validate_scale_anchor(const BaProblem& problem, const BaScaleAnchor& anchor
 void validate_ba_problem(const BaProblem& problem) {
   for (std::size_t i = 0; i < problem.keyframes.size(); ++i)
     if (!finite_pose(problem.keyframes[i].T_c_w))
-      fail("keyframe " + std::to_string(i) + " (id " + std::to_string(problem.keyframes[i].id) +
+      fail_problem("keyframe " + std::to_string(i) + " (id " + std::to_string(problem.keyframes[i].id) +
            ") has a non-finite pose");
   for (std::size_t i = 0; i < problem.points.size(); ++i)
     if (!problem.points[i].p_w.allFinite())
-      fail("point " + std::to_string(i) + " (id " + std::to_string(problem.points[i].id) +
+      fail_problem("point " + std::to_string(i) + " (id " + std::to_string(problem.points[i].id) +
            ") has a non-finite position");
 
   bool any_fixed_block = false;
@@ -51,21 +51,21 @@ void validate_ba_problem(const BaProblem& problem) {
     const BaObservation& obs = problem.observations[i];
     const std::string name = "observation " + std::to_string(i);
     if (obs.keyframe >= problem.keyframes.size())
-      fail(name + " refers to keyframe index " + std::to_string(obs.keyframe) + ", expected below " +
+      fail_problem(name + " refers to keyframe index " + std::to_string(obs.keyframe) + ", expected below " +
            std::to_string(problem.keyframes.size()));
     if (obs.point >= problem.points.size())
-      fail(name + " refers to point index " + std::to_string(obs.point) + ", expected below " +
+      fail_problem(name + " refers to point index " + std::to_string(obs.point) + ", expected below " +
            std::to_string(problem.points.size()));
-    if (!obs.pixel.allFinite()) fail(name + " has a non-finite pixel");
+    if (!obs.pixel.allFinite()) fail_problem(name + " has a non-finite pixel");
     if (obs.level < 0 || obs.level > kMaxBaLevel)
-      fail(name + " has pyramid level " + std::to_string(obs.level) + ", expected 0.." +
+      fail_problem(name + " has pyramid level " + std::to_string(obs.level) + ", expected 0.." +
            std::to_string(kMaxBaLevel));
     any_fixed_block = any_fixed_block || problem.keyframes[obs.keyframe].fixed || problem.points[obs.point].fixed;
   }
   // Without a single fixed block the whole map can slide, turn and scale
   // freely: a caller's mistake, not something to paper over here.
   if (!problem.observations.empty() && !any_fixed_block)
-    fail("no keyframe or point taking part is fixed: fix at least one keyframe (normally the map's "
+    fail_problem("no keyframe or point taking part is fixed: fix at least one keyframe (normally the map's "
          "first) to remove the gauge freedom");
   if (problem.scale_anchor) validate_scale_anchor(problem, *problem.scale_anchor);
 }

@@ -9,20 +9,20 @@
 namespace facadeslam {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) { throw Error("bundle adjustment selection: " + what); }
+[[noreturn]] void fail_selection(const std::string& what) { throw Error("bundle adjustment selection: " + what); }
 
 // The ids as a set, checking they are unique.
 std::set<std::uint64_t> keyframe_ids(const std::vector<KeyFrameCentre>& keyframes) {
   std::set<std::uint64_t> ids;
   for (const KeyFrameCentre& kf : keyframes)
-    if (!ids.insert(kf.id).second) fail("keyframe id " + std::to_string(kf.id) + " appears twice");
+    if (!ids.insert(kf.id).second) fail_selection("keyframe id " + std::to_string(kf.id) + " appears twice");
   return ids;
 }
 
 void check_observations(const std::set<std::uint64_t>& ids, const std::vector<ObservationRef>& observations) {
   for (const ObservationRef& obs : observations)
     if (!ids.contains(obs.keyframe_id))
-      fail("an observation of point " + std::to_string(obs.point_id) + " names keyframe id " +
+      fail_selection("an observation of point " + std::to_string(obs.point_id) + " names keyframe id " +
            std::to_string(obs.keyframe_id) + ", which is not among the keyframes");
 }
 
@@ -34,10 +34,10 @@ BaSelection local_ba_selection(const std::vector<KeyFrameCentre>& keyframes,
   const std::set<std::uint64_t> ids = keyframe_ids(keyframes);
   check_observations(ids, observations);
   for (const KeyFrameCentre& kf : keyframes)
-    if (!kf.centre_w.allFinite()) fail("keyframe id " + std::to_string(kf.id) + " has a non-finite centre");
+    if (!kf.centre_w.allFinite()) fail_selection("keyframe id " + std::to_string(kf.id) + " has a non-finite centre");
   const auto newest_it =
       std::find_if(keyframes.begin(), keyframes.end(), [&](const KeyFrameCentre& kf) { return kf.id == newest; });
-  if (newest_it == keyframes.end()) fail("the newest keyframe id " + std::to_string(newest) + " is not among the keyframes");
+  if (newest_it == keyframes.end()) fail_selection("the newest keyframe id " + std::to_string(newest) + " is not among the keyframes");
   const std::uint64_t gauge = *ids.begin();
 
   BaSelection selection;
@@ -63,7 +63,7 @@ BaSelection local_ba_selection(const std::vector<KeyFrameCentre>& keyframes,
 BaSelection global_ba_selection(const std::vector<KeyFrameCentre>& keyframes,
                                 const std::vector<ObservationRef>& observations) {
   const std::set<std::uint64_t> ids = keyframe_ids(keyframes);
-  if (ids.empty()) fail("a global bundle adjustment needs at least one keyframe");
+  if (ids.empty()) fail_selection("a global bundle adjustment needs at least one keyframe");
   check_observations(ids, observations);
   BaSelection selection;
   selection.fixed_keyframes.insert(*ids.begin());

@@ -12,6 +12,7 @@
 #include <opencv2/core/eigen.hpp>
 #include <spdlog/spdlog.h>
 
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "mapmaker/init/essential_refinement.hpp"
 #include "mapmaker/init/homography_refinement.hpp"
@@ -21,7 +22,6 @@
 namespace facadeslam {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 // Refine, re-score, refine again while the inliers change: two or three
 // rounds settle in practice.
 constexpr int kMaxRefinementRounds = 3;
@@ -235,14 +235,14 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
   std::vector<bool> model_inliers = use_h ? h_support.inliers : e_score.inliers;
   const std::vector<int> inliers = indices_of(model_inliers);
   const std::vector<SE3d> poses = use_h ? homography_poses(H_normalised) : essential_poses(E);
-  const PointCheckOptions checks{options.max_reprojection_error_px, options.min_point_parallax_deg / kDegPerRad};
+  const PointCheckOptions checks{options.max_reprojection_error_px, deg_to_rad(options.min_point_parallax_deg)};
   std::vector<Hypothesis> hypotheses;
   for (const SE3d& pose : poses) hypotheses.push_back({pose, evaluate_pose(camera, pose, matches, inliers, checks)});
   if (hypotheses.empty())
     return fail(result, InitStatus::degenerate, fmt::format("the {} has no pose decomposition", to_string(result.model)));
   rank(hypotheses);
   const Hypothesis& best = hypotheses.front();
-  result.median_parallax_deg = best.evaluation.median_parallax_rad() * kDegPerRad;
+  result.median_parallax_deg = rad_to_deg(best.evaluation.median_parallax_rad());
   if (result.median_parallax_deg < options.min_median_parallax_deg)
     return fail(result, InitStatus::degenerate,
                 fmt::format("{}: median parallax {:.2f} deg < {:.2f} deg", to_string(result.model),
@@ -286,7 +286,7 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
   std::vector<int> all(n);
   for (std::size_t i = 0; i < n; ++i) all[i] = static_cast<int>(i);
   PoseEvaluation final_eval = evaluate_pose(camera, T_c1_c0, matches, all, checks);
-  result.median_parallax_deg = final_eval.median_parallax_rad() * kDegPerRad;
+  result.median_parallax_deg = rad_to_deg(final_eval.median_parallax_rad());
   int good_inliers = 0;
   int inlier_count = 0;
   for (const bool inlier : model_inliers) inlier_count += inlier ? 1 : 0;

@@ -4,6 +4,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/util/angles.hpp"
 #include "core/map/keyframe.hpp"
 
 namespace facadeslam {
@@ -14,7 +15,7 @@ std::optional<std::size_t> choose_epipolar_partner(const SE3d& T_new_w, double n
   const Eigen::Vector3d centre = T_new_w.inverse().translation();
   const Eigen::Vector3d axis = optical_axis_w(T_new_w);
   const double min_baseline = options.min_baseline * new_mean_depth;
-  const double min_cos = std::cos(options.max_axis_angle_deg * std::numbers::pi / 180.0);
+  const double min_cos = std::cos(deg_to_rad(options.max_axis_angle_deg));
 
   // Best by distance in each tier: 0 = baseline and shared view, 1 = baseline, 2 = any.
   std::optional<std::size_t> best[3];

@@ -6,6 +6,7 @@
 
 #include <Eigen/SVD>
 
+#include "core/util/angles.hpp"
 #include "mapmaker/mapping/new_point_candidates.hpp"
 #include "mapmaker/mapping/point_geometry.hpp"
 #include "tracker/patch_search.hpp"
@@ -123,7 +124,7 @@ std::vector<std::shared_ptr<MapPoint>> epipolar_new_points(Map& map, const Camer
       const Eigen::Vector3d to_new = T_new_w.inverse().translation() - *p_w;
       const Eigen::Vector3d to_other = T_other_w.inverse().translation() - *p_w;
       const double parallax_deg =
-          std::acos(std::clamp(to_new.normalized().dot(to_other.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
+          rad_to_deg(std::acos(std::clamp(to_new.normalized().dot(to_other.normalized()), -1.0, 1.0)));
       // A level-L match is only good to ~2^L level-0 pixels, so its depth
       // needs 2^L times the parallax of a level-0 point to be as certain.
       if (parallax_deg < options.min_parallax_deg * scale) continue;

@@ -10,6 +10,7 @@
 #include "core/map/semantic_classes.hpp"
 #include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
+#include "semantics/forest/opencv_reason.hpp"
 #include "semantics/text.hpp"
 
 namespace facadeslam::semantics {
@@ -17,8 +18,6 @@ namespace {
 
 constexpr const char* kFormat = "facadeslam-forest";
 constexpr int kVersion = 1;
-
-std::string opencv_reason(const cv::Exception& e) { return e.err.empty() ? std::string(e.what()) : e.err; }
 
 bool ends_with(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;

@@ -4,12 +4,11 @@
 #include <string>
 
 #include "core/util/error.hpp"
+#include "semantics/forest/opencv_reason.hpp"
 #include "semantics/text.hpp"
 
 namespace facadeslam::semantics {
 namespace {
-
-std::string opencv_reason(const cv::Exception& e) { return e.err.empty() ? std::string(e.what()) : e.err; }
 
 void require_samples(const cv::Mat& samples, int width, const char* what) {
   if (samples.type() != CV_32F || samples.dims != 2) {

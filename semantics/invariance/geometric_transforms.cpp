@@ -7,13 +7,14 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
+#include "semantics/invariance/transform_input.hpp"
 #include "semantics/text.hpp"
 
 namespace facadeslam::semantics {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 struct Tilt {
   double viewpoint_degrees;  // theta
@@ -32,17 +33,13 @@ const Tilt& tilt_of(int affine_case) {
   return kTilts[static_cast<std::size_t>(affine_case - 1)];
 }
 
-void require_colour_image(const cv::Mat& bgr) {
-  if (bgr.empty() || bgr.type() != CV_8UC3) throw Error("image transform: expected a non-empty 8-bit BGR image");
-}
-
 }  // namespace
 
 cv::Matx22d affine_case_matrix(int affine_case) {
   if (affine_case == 0) return cv::Matx22d::eye();
   const Tilt& t = tilt_of(affine_case);
-  const double shrink = 1.0 - std::cos(t.viewpoint_degrees * kDegree);
-  const double c = std::cos(t.direction_degrees * kDegree), s = std::sin(t.direction_degrees * kDegree);
+  const double shrink = 1.0 - std::cos(deg_to_rad(t.viewpoint_degrees));
+  const double c = std::cos(deg_to_rad(t.direction_degrees)), s = std::sin(deg_to_rad(t.direction_degrees));
   return cv::Matx22d(1.0 - shrink * c * c, -shrink * c * s, -shrink * c * s, 1.0 - shrink * s * s);
 }
 
@@ -83,7 +80,7 @@ TransformedImage warp_about_centre(const cv::Mat& bgr, const cv::Matx22d& a) {
 
 TransformedImage rotate_image(const cv::Mat& bgr, double degrees) {
   if (!std::isfinite(degrees)) throw Error("rotation: the angle must be a finite number of degrees");
-  const double c = std::cos(degrees * kDegree), s = std::sin(degrees * kDegree);
+  const double c = std::cos(deg_to_rad(degrees)), s = std::sin(deg_to_rad(degrees));
   // y points down, so this turns the picture counter-clockwise as seen.
   return warp_about_centre(bgr, cv::Matx22d(c, s, -s, c));
 }

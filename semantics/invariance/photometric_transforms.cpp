@@ -8,16 +8,10 @@
 
 #include "core/util/error.hpp"
 #include "semantics/invariance/illuminant.hpp"
+#include "semantics/invariance/transform_input.hpp"
 #include "semantics/text.hpp"
 
 namespace facadeslam::semantics {
-namespace {
-
-void require_colour_image(const cv::Mat& bgr) {
-  if (bgr.empty() || bgr.type() != CV_8UC3) throw Error("image transform: expected a non-empty 8-bit BGR image");
-}
-
-}  // namespace
 
 cv::Mat blur_image(const cv::Mat& bgr, int kernel) {
   require_colour_image(bgr);

@@ -16,11 +16,11 @@ constexpr int kSide = 2 * EddDescriptor::kRadius + 1;
 constexpr int kArea = kSide * kSide;
 constexpr double kTwoPi = 6.283185307179586;
 
-enum Plane { kR, kG, kB, kH, kS, kV, kSinH, kCosH, kDistance, kPlaneCount };
+enum EddPlane { kR, kG, kB, kH, kS, kV, kSinH, kCosH, kDistance, kEddPlaneCount };
 
 // Padded float planes of the image, so every patch is a plain 9 x 9 block.
-std::array<cv::Mat, kPlaneCount> padded_planes(const cv::Mat& bgr) {
-  std::array<cv::Mat, kPlaneCount> planes;
+std::array<cv::Mat, kEddPlaneCount> padded_planes(const cv::Mat& bgr) {
+  std::array<cv::Mat, kEddPlaneCount> planes;
   for (cv::Mat& p : planes) p.create(bgr.size(), CV_32F);
   convert_colour(bgr, ColourSpace::rgb, {&planes[kR], &planes[kG], &planes[kB]});
   convert_colour(bgr, ColourSpace::hsv, {&planes[kH], &planes[kS], &planes[kV]});
@@ -98,7 +98,7 @@ cv::Mat EddDescriptor::compute(const cv::Mat& bgr, const std::vector<cv::Point2f
   check_descriptor_input(name(), bgr, keypoints);
   cv::Mat rows(static_cast<int>(keypoints.size()), kWidth, CV_32F);
   if (keypoints.empty()) return rows;
-  const std::array<cv::Mat, kPlaneCount> planes = padded_planes(bgr);
+  const std::array<cv::Mat, kEddPlaneCount> planes = padded_planes(bgr);
   for (std::size_t k = 0; k < keypoints.size(); ++k) {
     const cv::Point2f& p = keypoints[k];
     // Padded coordinates of the patch's top-left corner = image pixel - r + r.
@@ -107,8 +107,8 @@ cv::Mat EddDescriptor::compute(const cv::Mat& bgr, const std::vector<cv::Point2f
     out[0] = p.x / static_cast<float>(bgr.cols);
     out[1] = p.y / static_cast<float>(bgr.rows);
     int column = 2;
-    for (const Plane plane : {kR, kG, kB, kS, kSinH, kCosH}) out[column++] = mean(patch(planes[plane], x, y));
-    for (const Plane plane : {kR, kG, kB, kH, kS, kV}) {
+    for (const EddPlane plane : {kR, kG, kB, kS, kSinH, kCosH}) out[column++] = mean(patch(planes[plane], x, y));
+    for (const EddPlane plane : {kR, kG, kB, kH, kS, kV}) {
       third_order_moments(patch(planes[plane], x, y), out + column);
       column += 4;
     }

@@ -4,13 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/util/angles.hpp"
 #include "sequences/synth/deterministic_random.hpp"
 
 namespace facadeslam::synth {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
 // Streams of the seeded generators, so that each use draws independently.
 constexpr std::uint64_t kHandheldStream = 0x4A17;
 constexpr std::uint64_t kShakeStream = 0x5AE0;
@@ -47,7 +46,7 @@ SmoothJitter::SmoothJitter(std::uint64_t seed, std::uint64_t stream, double freq
   const double multipliers[] = {0.53, 1.0, 1.87};
   for (int axis = 0; axis < 6; ++axis)
     for (double m : multipliers)
-      waves_.push_back({frequency * m * random.uniform(0.8, 1.2), 2.0 * kPi * random.uniform()});
+      waves_.push_back({frequency * m * random.uniform(0.8, 1.2), 2.0 * std::numbers::pi * random.uniform()});
 }
 
 Eigen::Matrix<double, 6, 1> SmoothJitter::at(double t) const {
@@ -56,7 +55,7 @@ Eigen::Matrix<double, 6, 1> SmoothJitter::at(double t) const {
     double sum = 0.0;
     for (int k = 0; k < 3; ++k) {
       const Wave& w = waves_[axis * 3 + k];
-      sum += std::sin(2.0 * kPi * w.frequency * t + w.phase);
+      sum += std::sin(2.0 * std::numbers::pi * w.frequency * t + w.phase);
     }
     v(axis) = sum / 3.0;
   }
@@ -66,7 +65,7 @@ Eigen::Matrix<double, 6, 1> SmoothJitter::at(double t) const {
 CameraPath::CameraPath(const StartSpec& start, const std::vector<SegmentSpec>& segments,
                        const JitterSpec& handheld, std::uint64_t seed)
     : segments_(segments), handheld_(handheld), handheld_jitter_(seed, kHandheldStream, handheld.frequency) {
-  State state{start.position, start.heading_deg * kDegree, start.pitch_deg * kDegree, start.roll_deg * kDegree};
+  State state{start.position, deg_to_rad(start.heading_deg), deg_to_rad(start.pitch_deg), deg_to_rad(start.roll_deg)};
   double time = 0.0;
   for (std::size_t i = 0; i < segments_.size(); ++i) {
     starts_.push_back(state);
@@ -89,16 +88,16 @@ CameraPath::State CameraPath::advance(const State& from, const SegmentSpec& segm
       break;
     }
     case SegmentType::walk: {
-      const double direction = from.heading + segment.direction_deg * kDegree;
+      const double direction = from.heading + deg_to_rad(segment.direction_deg);
       state.position += s * segment.speed * segment.duration *
                         Eigen::Vector3d(std::cos(direction), std::sin(direction), 0.0);
       // Two steps per second, a whole number of them so the bob ends at zero.
       const double steps = std::max(1.0, std::round(2.0 * segment.duration));
-      state.position.z() += segment.bob * std::sin(2.0 * kPi * steps * u);
+      state.position.z() += segment.bob * std::sin(2.0 * std::numbers::pi * steps * u);
       break;
     }
     case SegmentType::arc: {
-      const double turn = segment.angle_deg * kDegree;
+      const double turn = deg_to_rad(segment.angle_deg);
       const double side = turn >= 0.0 ? 1.0 : -1.0;  // centre on the left for a left turn
       const auto left = [](double heading) { return Eigen::Vector3d(-std::sin(heading), std::cos(heading), 0.0); };
       const Eigen::Vector3d centre = from.position + side * segment.radius * left(from.heading);
@@ -108,8 +107,8 @@ CameraPath::State CameraPath::advance(const State& from, const SegmentSpec& segm
       break;
     }
     case SegmentType::rotate:
-      state.heading = from.heading + s * segment.yaw_deg * kDegree;
-      state.pitch = from.pitch + s * segment.pitch_deg * kDegree;
+      state.heading = from.heading + s * deg_to_rad(segment.yaw_deg);
+      state.pitch = from.pitch + s * deg_to_rad(segment.pitch_deg);
       break;
     case SegmentType::shake:
       break;  // the jitter is added in T_w_c()
@@ -141,15 +140,15 @@ Eigen::Isometry3d CameraPath::T_w_c(double t) const {
   // Jitter in the camera frame: T_w_c <- T_w_c * (R(delta_omega), delta_t).
   Eigen::Matrix<double, 6, 1> delta = Eigen::Matrix<double, 6, 1>::Zero();
   if (segment.type == SegmentType::shake) {
-    const double window = std::pow(std::sin(kPi * u), 2);
+    const double window = std::pow(std::sin(std::numbers::pi * u), 2);
     const auto j = shakes_[i].at(t);
     delta.head<3>() += window * segment.translation * j.head<3>();
-    delta.tail<3>() += window * segment.rotation_deg * kDegree * j.tail<3>();
+    delta.tail<3>() += window * deg_to_rad(segment.rotation_deg) * j.tail<3>();
   }
   if (handheld_.translation > 0.0 || handheld_.rotation_deg > 0.0) {
     const auto j = handheld_jitter_.at(t);
     delta.head<3>() += handheld_.translation * translation_gate(t) * j.head<3>();
-    delta.tail<3>() += handheld_.rotation_deg * kDegree * j.tail<3>();
+    delta.tail<3>() += deg_to_rad(handheld_.rotation_deg) * j.tail<3>();
   }
   if (!delta.isZero()) {
     Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();

@@ -9,10 +9,8 @@
 namespace facadeslam::synth {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Streams that keep the layers of one texture independent.
-enum Stream : std::uint64_t {
+enum TextureStream : std::uint64_t {
   kRoadLarge = 1, kRoadMedium, kRoadGrain, kRoadRepair, kRoadManhole, kRoadDash, kRoadWear,
   kSlabRow, kSlabTone, kSlabStain, kSlabGrain, kKerb, kSkyClouds, kSkyShade,
 };
@@ -241,8 +239,8 @@ cv::Mat sky_panorama(int width, int height, const SkySpec& sky, std::uint64_t se
   // and interpolated.
   constexpr int kStep = 4;
   const auto direction = [&](double i, double j) {
-    const double elevation = kPi * (0.5 - (j + 0.5) / height);
-    const double azimuth = 2.0 * kPi * ((i + 0.5) / width - 0.5);
+    const double elevation = std::numbers::pi * (0.5 - (j + 0.5) / height);
+    const double azimuth = 2.0 * std::numbers::pi * ((i + 0.5) / width - 0.5);
     return cv::Vec3d(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
                      std::sin(elevation));
   };
@@ -259,8 +257,8 @@ cv::Mat sky_panorama(int width, int height, const SkySpec& sky, std::uint64_t se
   const cv::Mat shade = upsample(shading, kStep, height, width);
   cv::Mat out(height, width, CV_8UC3);
   for (int j = 0; j < height; ++j) {
-    const double elevation = kPi * (0.5 - (j + 0.5) / height);
-    const double t = std::pow(std::max(elevation, 0.0) / (0.5 * kPi), 0.55);
+    const double elevation = std::numbers::pi * (0.5 - (j + 0.5) / height);
+    const double t = std::pow(std::max(elevation, 0.0) / (0.5 * std::numbers::pi), 0.55);
     cv::Vec3d gradient = (1.0 - t) * sky.horizon_rgb + t * sky.zenith_rgb;
     if (elevation < 0.0) gradient *= 0.85;
     for (int i = 0; i < width; ++i) {

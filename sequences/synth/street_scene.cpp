@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/util/angles.hpp"
 #include "sequences/synth/deterministic_random.hpp"
 #include "sequences/synth/label_classes.hpp"
 #include "sequences/synth/procedural_textures.hpp"
@@ -13,13 +14,12 @@
 namespace facadeslam::synth {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 // Ground textures are tiled along the street in pieces of at most this many
 // texels (seamless: the textures are functions of world coordinates).
 constexpr int kTileTexels = 4096;
 // Vegetation bends, so it is split into horizontal strips.
 constexpr int kVegetationRows = 8;
-enum Stream : std::uint64_t { kRoad = 11, kPavement, kSky, kSway };
+enum SceneStream : std::uint64_t { kRoad = 11, kPavement, kSky, kSway };
 
 void add_ground_strip(render::Scene& scene, render::Renderer& renderer, const StreetSpec& street, double y_low,
                       double y_high, std::uint8_t label, int side, std::uint64_t seed) {
@@ -51,7 +51,7 @@ void add_ground_strip(render::Scene& scene, render::Renderer& renderer, const St
 }  // namespace
 
 Placement stand_upright(const Eigen::Vector3d& position, double facing_deg, double width, const cv::Size& photo) {
-  const double facing = facing_deg * kDegree;
+  const double facing = deg_to_rad(facing_deg);
   // Seen from the front (looking along -normal), the photo's right is
   // (-sin facing, cos facing, 0).
   const Eigen::Vector3d right_unit(-std::sin(facing), std::cos(facing), 0.0);

@@ -18,10 +18,9 @@ namespace {
 
 using ::testing::HasSubstr;
 
-DescriptorParams with_values(std::initializer_list<const char*> names, DescriptorParams p = Genome::thesis_best().decode()) {
-  p.activation.reset();
-  for (const char* name : names) p.activation.set(static_cast<std::size_t>(value_index(name).value()));
-  return p;
+// The thesis genome's preprocessing with exactly the named values active.
+DescriptorParams thesis_with(std::initializer_list<const char*> names) {
+  return test_util::with_values(names, Genome::thesis_best().decode());
 }
 
 std::vector<cv::Point2f> grid(cv::Size size, int step) {
@@ -63,7 +62,7 @@ TEST_F(Extraction, ColumnsArePopcountOfActivation) {
 }
 
 TEST_F(Extraction, InactiveModulesAreNotRun) {
-  const DescriptorParams p = with_values({"mean_c0", "eta11_c1"});
+  const DescriptorParams p = thesis_with({"mean_c0", "eta11_c1"});
   ExtractionStats stats;
   const cv::Mat d = extract(prepare(image, p), keypoints, p, &stats);
   EXPECT_EQ(d.cols, 2);
@@ -80,7 +79,7 @@ TEST_F(Extraction, InactiveModulesAreNotRun) {
 }
 
 TEST(ExtractionPlan, MomentOrderFollowsTheActiveValues) {
-  const auto plan_for = [](std::initializer_list<const char*> names) { return plan_extraction(with_values(names).activation); };
+  const auto plan_for = [](std::initializer_list<const char*> names) { return plan_extraction(thesis_with(names).activation); };
   EXPECT_EQ(plan_for({"eta20_c0"}).moment_order, (std::array<int, 3>{2, -1, -1}));
   EXPECT_EQ(plan_for({"hu1_c2"}).moment_order, (std::array<int, 3>{-1, -1, 3}));
   EXPECT_EQ(plan_for({"ami1_c1"}).moment_order, (std::array<int, 3>{-1, 2, -1}));
@@ -118,7 +117,7 @@ TEST_F(Extraction, IsDeterministic) {
 }
 
 TEST_F(Extraction, ValuesMatchTheirDefinitions) {
-  DescriptorParams p = with_values({"x_norm", "mean_c1", "std_c2", "mean_edge_distance"});
+  DescriptorParams p = thesis_with({"x_norm", "mean_c1", "std_c2", "mean_edge_distance"});
   const PreparedImage prepared = prepare(image, p);
   const std::vector<cv::Point2f> points{{40.2f, 30.7f}};
   const cv::Mat d = extract(prepared, points, p);
@@ -136,7 +135,7 @@ TEST_F(Extraction, ValuesMatchTheirDefinitions) {
 }
 
 TEST_F(Extraction, PatchesAtTheBorderAreReflected) {
-  const DescriptorParams p = with_values({"mean_c0", "std_c0"});
+  const DescriptorParams p = thesis_with({"mean_c0", "std_c0"});
   const PreparedImage prepared = prepare(image, p);
   const cv::Mat d = extract(prepared, {{0.0f, 0.0f}, {95.4f, 71.4f}}, p);
   cv::Mat reflected;
@@ -153,13 +152,13 @@ TEST_F(Extraction, EmptyInputs) {
   const DescriptorParams p = Genome::thesis_best().decode();
   const cv::Mat none = extract(prepare(image, p), {}, p);
   EXPECT_EQ(none.rows, 0);
-  const DescriptorParams nothing = with_values({});
+  const DescriptorParams nothing = thesis_with({});
   const cv::Mat no_values = extract(prepare(image, nothing), keypoints, nothing);
   EXPECT_EQ(no_values.cols, 0);
 }
 
 TEST_F(Extraction, RejectsKeypointsOutsideTheImage) {
-  const DescriptorParams p = with_values({"mean_c0"});
+  const DescriptorParams p = thesis_with({"mean_c0"});
   const PreparedImage prepared = prepare(image, p);
   EXPECT_THAT([&] { extract(prepared, {{1, 1}, {96.0f, 10.0f}}, p); },
               ::testing::ThrowsMessage<Error>(::testing::AllOf(HasSubstr("keypoint 1"), HasSubstr("outside the 96x72"))));
@@ -169,13 +168,13 @@ TEST_F(Extraction, RejectsKeypointsOutsideTheImage) {
 }
 
 TEST_F(Extraction, RejectsAMismatchedPreparedImage) {
-  const DescriptorParams p = with_values({"mean_c0"});
+  const DescriptorParams p = thesis_with({"mean_c0"});
   const PreparedImage prepared = prepare(image, p);
   DescriptorParams other_space = p;
   other_space.colour_space = ColourSpace::lab;
   EXPECT_THAT([&] { extract(prepared, keypoints, other_space); },
               ::testing::ThrowsMessage<Error>(HasSubstr("other preprocessing parameters")));
-  DescriptorParams missing = with_values({"mean_c0", "std_gevers_c2"});
+  DescriptorParams missing = thesis_with({"mean_c0", "std_gevers_c2"});
   EXPECT_THAT([&] { extract(prepared, keypoints, missing); },
               ::testing::ThrowsMessage<Error>(HasSubstr("lacks the Gevers c2 plane")));
   DescriptorParams small = p;

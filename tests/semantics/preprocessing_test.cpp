@@ -20,11 +20,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-DescriptorParams with_values(std::initializer_list<const char*> names, DescriptorParams p = {}) {
-  p.activation.reset();
-  for (const char* name : names) p.activation.set(static_cast<std::size_t>(value_index(name).value()));
-  return p;
-}
+using test_util::with_values;
 
 std::array<cv::Mat, 3> converted(const cv::Mat& bgr, ColourSpace space) {
   std::array<cv::Mat, 3> planes;

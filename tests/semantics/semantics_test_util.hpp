@@ -2,14 +2,24 @@
 // Synthetic patches and images for the descriptor tests.
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "semantics/descriptor/descriptor_params.hpp"
+#include "semantics/descriptor/module_layout.hpp"
 #include "semantics/descriptor/padded_plane.hpp"
 #include "semantics/descriptor/prepared_image.hpp"
 
 namespace facadeslam::semantics::test_util {
+
+// `base` with exactly the named values active.
+inline DescriptorParams with_values(std::initializer_list<const char*> names, DescriptorParams base = {}) {
+  base.activation.reset();
+  for (const char* name : names) base.activation.set(static_cast<std::size_t>(value_index(name).value()));
+  return base;
+}
 
 // A (2r+1)^2 CV_32F patch with f(dx, dy) at offset (dx, dy) from the centre.
 inline cv::Mat patch_from(int r, const std::function<double(double, double)>& f) {

@@ -10,19 +10,12 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/tracker/patch_source_at.hpp"
 #include "tests/tracker/rendered_plane.hpp"
 #include "tracker/patch_warp.hpp"
 
 namespace facadeslam::tracker {
 namespace {
-
-PatchSource source_at(std::shared_ptr<const ImagePyramid> pyramid, int level, Eigen::Vector2d pixel_level) {
-  PatchSource s;
-  s.pyramid = std::move(pyramid);
-  s.level = level;
-  s.pixel_level0 = ImagePyramid::level_to_level0(pixel_level, level);
-  return s;
-}
 
 // A bright blurred square on a dark background: FAST fires at its four corners only.
 cv::Mat square_image(int brightness_offset = 0) {

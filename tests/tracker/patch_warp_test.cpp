@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/util/error.hpp"
+#include "tests/tracker/patch_source_at.hpp"
 #include "tests/tracker/rendered_plane.hpp"
 #include "tracker/patch_search.hpp"
 
@@ -25,14 +26,6 @@ std::shared_ptr<const ImagePyramid> noise_pyramid(int seed = 3) {
   PyramidOptions options;
   options.detect_corners = false;
   return std::make_shared<const ImagePyramid>(image, options);
-}
-
-PatchSource source_at(std::shared_ptr<const ImagePyramid> pyramid, int level, Eigen::Vector2d pixel_level) {
-  PatchSource s;
-  s.pyramid = std::move(pyramid);
-  s.level = level;
-  s.pixel_level0 = ImagePyramid::level_to_level0(pixel_level, level);
-  return s;
 }
 
 float pixel(const ImagePyramid& p, int level, int x, int y) {

@@ -9,6 +9,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "core/util/angles.hpp"
 #include "tracker/reloc/small_blurry_image.hpp"
 
 namespace facadeslam {
@@ -270,7 +271,7 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
   // elsewhere: the camera has turned.
   const Eigen::Vector3d centre = result.T_c_w.inverse().translation();
   const Eigen::Vector3d axis = optical_axis_w(result.T_c_w);
-  const double min_cos = std::cos(options_.keyframe_min_angle_deg * std::numbers::pi / 180.0);
+  const double min_cos = std::cos(deg_to_rad(options_.keyframe_min_angle_deg));
   // After a turn the newest keyframes hold depth-prior points: the first
   // small step away gives them a baseline, so it makes a keyframe sooner.
   const double min_distance =
