@@ -55,6 +55,18 @@ endfunction()
 # gtest, Eigen, OpenCV and Ceres take 2-3 s to parse per file, which was a
 # third of CI's build time across the ~130 test files.
 option(FACADESLAM_PCH "Share one precompiled header of the third-party headers across the tests" ON)
+# Under the sanitizers the test programs' own code is compiled at -O0: the
+# instrumented optimiser takes twice as long on gtest bodies and Ceres/Eigen
+# templates instantiated in tests, and the heavy work the tests exercise
+# runs in the libraries, which keep the build type's optimisation. Programs
+# whose own code does heavy work (board rendering, textbook BA problems) say
+# KEEP_OPTIMISED. The precompiled header must match (it fixes __OPTIMIZE__).
+function(facadeslam_test_sanitizer_optimisation target)
+  if(FACADESLAM_SANITIZE)
+    target_compile_options(${target} PRIVATE -O0)
+  endif()
+endfunction()
+
 if(FACADESLAM_BUILD_TESTS)
   add_library(facadeslam_test_deps INTERFACE)
   target_link_libraries(facadeslam_test_deps INTERFACE
@@ -62,6 +74,7 @@ if(FACADESLAM_BUILD_TESTS)
   if(FACADESLAM_PCH)
     add_library(facadeslam_test_pch OBJECT ${PROJECT_SOURCE_DIR}/cmake/pch_anchor.cpp)
     target_link_libraries(facadeslam_test_pch PRIVATE facadeslam_options facadeslam_test_deps)
+    facadeslam_test_sanitizer_optimisation(facadeslam_test_pch)
     target_precompile_headers(facadeslam_test_pch PRIVATE
       <algorithm> <cmath> <filesystem> <memory> <string> <vector>
       <gtest/gtest.h> <gmock/gmock.h> <Eigen/Core> <Eigen/Geometry> <opencv2/core.hpp> <ceres/ceres.h>)
@@ -72,9 +85,10 @@ endif()
 # FIXTURES names CTest fixtures every discovered test requires (e.g. a
 # set-up test that clears a cache shared by the test processes). RUNS_APP:
 # the tests run the built `facadeslam` binary, whose path they get as
-# FACADESLAM_BINARY (and the program is built after it).
+# FACADESLAM_BINARY (and the program is built after it). KEEP_OPTIMISED: see
+# facadeslam_test_sanitizer_optimisation above.
 function(facadeslam_test name)
-  cmake_parse_arguments(ARG "RUNS_APP" "LABEL" "SOURCES;DEPS;FIXTURES" ${ARGN})
+  cmake_parse_arguments(ARG "RUNS_APP;KEEP_OPTIMISED" "LABEL" "SOURCES;DEPS;FIXTURES" ${ARGN})
   if(NOT ARG_LABEL)
     set(ARG_LABEL unit)
   endif()
@@ -89,8 +103,13 @@ function(facadeslam_test name)
     target_compile_definitions(${name} PRIVATE FACADESLAM_BINARY="$<TARGET_FILE:facadeslam>")
     add_dependencies(${name} facadeslam)
   endif()
-  if(FACADESLAM_PCH)
-    target_precompile_headers(${name} REUSE_FROM facadeslam_test_pch)
+  # A KEEP_OPTIMISED program under the sanitizers is compiled like the
+  # libraries, so it cannot use the tests' -O0 precompiled header.
+  if(NOT (FACADESLAM_SANITIZE AND ARG_KEEP_OPTIMISED))
+    facadeslam_test_sanitizer_optimisation(${name})
+    if(FACADESLAM_PCH)
+      target_precompile_headers(${name} REUSE_FROM facadeslam_test_pch)
+    endif()
   endif()
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
   if(FACADESLAM_SANITIZE)
