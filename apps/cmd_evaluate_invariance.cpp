@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -104,31 +103,6 @@ std::vector<semantics::InvarianceCaseRun> chosen_cases(const Options& o) {
   return runs;
 }
 
-std::string rate_text(double v) {
-  if (!std::isfinite(v)) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f", v);
-  return text;
-}
-
-void print_summary(const semantics::InvarianceResult& r) {
-  std::printf("invariance: %zu images, %zu reference keypoints (grid step %d, margin %d), %.1f s\n", r.images.size(),
-              r.reference_keypoints, r.step, r.margin, r.seconds);
-  for (const auto& c : r.cases) {
-    const auto& info = semantics::case_info(c.id);
-    std::printf("\n%s: match rate per %s\n  %10s", std::string(info.title).c_str(), std::string(info.parameter).c_str(),
-                "");
-    for (const auto& name : r.descriptors) std::printf(" %13s", name.c_str());
-    std::printf("\n");
-    for (std::size_t v = 0; v < c.values.size(); ++v) {
-      std::printf("  %10g", c.values[v]);
-      for (std::size_t d = 0; d < r.descriptors.size(); ++d) std::printf(" %13s", rate_text(c.match_rate[d][v]).c_str());
-      std::printf("\n");
-    }
-  }
-  std::fflush(stdout);
-}
-
 void run(const Options& o) {
   // Everything cheap is checked before the long run.
   const semantics::Genome genome = resolve_genome(o.genome);
@@ -156,7 +130,8 @@ void run(const Options& o) {
   const std::vector<fs::path> images = semantics::list_images(inputs, o.max_images);
 
   const semantics::InvarianceResult result = semantics::run_invariance(images, descriptors, options);
-  print_summary(result);
+  std::fputs(semantics::invariance_table(result).c_str(), stdout);
+  std::fflush(stdout);
   if (!o.json.empty()) {
     Json report = semantics::to_json(result);
     report["genome"] = genome.to_string();

@@ -8,11 +8,17 @@
 //             "per_image": {"<descriptor>": [[one per image] per value]}}],
 //  "seconds"}
 // Match rates with no keypoint behind them are null.
+//
+// invariance_table(): the same figures as text for a terminal, one table per
+// case (a row per changed value, a column per descriptor, "-" for no rate).
+#include <string>
+
 #include "core/util/json.hpp"
 #include "semantics/invariance/invariance_suite.hpp"
 
 namespace facadeslam::semantics {
 
 Json to_json(const InvarianceResult& result);
+std::string invariance_table(const InvarianceResult& result);
 
 }  // namespace facadeslam::semantics

@@ -260,6 +260,14 @@ TEST(InvarianceReport, JsonHoldsEveryCaseWithValuesAndRatesPerDescriptor) {
   EXPECT_THAT(json, HasSubstr("\"width\": 113"));
 }
 
+TEST(InvarianceReport, TableHasARowPerValueAndAColumnPerDescriptor) {
+  const std::string table = invariance_table(hand_made_result());
+  EXPECT_THAT(table, HasSubstr("2 images, 40 reference keypoints (grid step 9, margin 15)"));
+  EXPECT_THAT(table, HasSubstr("         sift           edd\n"));
+  EXPECT_THAT(table, HasSubstr("\n          90         0.250             -\n"));  // no keypoint, no rate
+  EXPECT_THAT(table, HasSubstr("JPEG"));
+}
+
 TEST(InvariancePlot, OnePanelPerCaseAndOneFilePerCase) {
   const InvarianceResult r = hand_made_result();
   const cv::Mat figure = invariance_figure(r, 4, {400, 300});
