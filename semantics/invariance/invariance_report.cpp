@@ -1,8 +1,9 @@
 #include "semantics/invariance/invariance_report.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
+
+#include <fmt/printf.h>
 
 namespace facadeslam::semantics {
 namespace {
@@ -45,20 +46,7 @@ Json case_json(const InvarianceResult& result, const InvarianceCaseResult& r) {
   return j;
 }
 
-// printf into a std::string (the table's fixed-width columns).
-template <typename... Args>
-void append_format(std::string& out, const char* format, Args... args) {
-  char text[160];
-  std::snprintf(text, sizeof text, format, args...);
-  out.append(text);
-}
-
-std::string rate_text(double v) {
-  if (!std::isfinite(v)) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f", v);
-  return text;
-}
+std::string rate_text(double v) { return std::isfinite(v) ? fmt::sprintf("%.3f", v) : std::string("-"); }
 
 }  // namespace
 
@@ -91,18 +79,18 @@ Json to_json(const InvarianceResult& result) {
 
 std::string invariance_table(const InvarianceResult& r) {
   std::string out;
-  append_format(out, "invariance: %zu images, %zu reference keypoints (grid step %d, margin %d), %.1f s\n",
-                r.images.size(), r.reference_keypoints, r.step, r.margin, r.seconds);
+  out += fmt::sprintf("invariance: %zu images, %zu reference keypoints (grid step %d, margin %d), %.1f s\n",
+                      r.images.size(), r.reference_keypoints, r.step, r.margin, r.seconds);
   for (const InvarianceCaseResult& c : r.cases) {
     const InvarianceCaseInfo& info = case_info(c.id);
-    append_format(out, "\n%s: match rate per %s\n  %10s", std::string(info.title).c_str(),
-                  std::string(info.parameter).c_str(), "");
-    for (const std::string& name : r.descriptors) append_format(out, " %13s", name.c_str());
+    out += fmt::sprintf("\n%s: match rate per %s\n  %10s", std::string(info.title).c_str(),
+                        std::string(info.parameter).c_str(), "");
+    for (const std::string& name : r.descriptors) out += fmt::sprintf(" %13s", name.c_str());
     out.push_back('\n');
     for (std::size_t v = 0; v < c.values.size(); ++v) {
-      append_format(out, "  %10g", c.values[v]);
+      out += fmt::sprintf("  %10g", c.values[v]);
       for (std::size_t d = 0; d < r.descriptors.size(); ++d)
-        append_format(out, " %13s", rate_text(c.match_rate[d][v]).c_str());
+        out += fmt::sprintf(" %13s", rate_text(c.match_rate[d][v]).c_str());
       out.push_back('\n');
     }
   }
