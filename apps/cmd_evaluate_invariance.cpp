@@ -53,21 +53,6 @@ std::string option_name(std::string_view case_name) {
   throw Error(text.append(": ").append(message));
 }
 
-std::vector<std::string> descriptor_names(const std::vector<std::string>& given) {
-  std::vector<std::string> names;
-  for (const std::string& name : given) {
-    if (name == "all") {
-      for (const std::string_view n : semantics::kPointDescriptorNames) names.emplace_back(n);
-      continue;
-    }
-    names.push_back(name);
-  }
-  std::vector<std::string> unique;
-  for (const std::string& n : names)
-    if (std::find(unique.begin(), unique.end(), n) == unique.end()) unique.push_back(n);
-  return unique;
-}
-
 std::vector<semantics::InvarianceCaseRun> chosen_cases(const Options& o) {
   std::array<bool, kCaseCount> chosen{};
   for (const std::string& name : o.cases) {
@@ -117,7 +102,7 @@ void run(const Options& o) {
   if (!o.plot.empty() && plot_extension != ".png") fail_file(o.plot, "expected a file name ending in .png for the plot");
 
   std::vector<std::unique_ptr<semantics::PointDescriptor>> owned;
-  for (const std::string& name : descriptor_names(o.descriptors)) {
+  for (const std::string& name : semantics::expand_descriptor_names(o.descriptors)) {
     try {
       owned.push_back(semantics::make_point_descriptor(name, genome));
     } catch (const Error& e) {

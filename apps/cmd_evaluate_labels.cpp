@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <spdlog/spdlog.h>
 
@@ -12,6 +13,7 @@
 #include "core/util/error.hpp"
 #include "core/util/json.hpp"
 #include "semantics/evaluation/confusion_plot.hpp"
+#include "semantics/evaluation/label_comparison.hpp"
 #include "semantics/evaluation/label_evaluation.hpp"
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
@@ -25,6 +27,7 @@ using semantics::Genome;
 
 struct Options {
   semantics::LabelEvaluationOptions evaluation;
+  std::vector<std::string> descriptors{"modular"};  // several: one run each, same keypoints and forest settings
   std::string genome;  // text, file or empty (thesis genome)
   std::filesystem::path json, confusion;
 };
@@ -55,25 +58,51 @@ void print_summary(const semantics::LabelEvaluation& r) {
   std::fflush(stdout);
 }
 
+// With several descriptors each gets its own confusion PNG: NAME_<descriptor>.png.
+std::filesystem::path confusion_path(const Options& o, const std::string& descriptor, bool several) {
+  if (!several) return o.confusion;
+  std::filesystem::path p = o.confusion;
+  return p.replace_filename(o.confusion.stem().string() + "_" + descriptor + ".png");
+}
+
+void save_confusion(const std::filesystem::path& path, const semantics::LabelEvaluation& result) {
+  char title[200];
+  std::snprintf(title, sizeof title, "%s: overall %.1f %%, average %.1f %% (%zu test images)", result.descriptor.c_str(),
+                100.0 * result.confusion.overall_recognition_rate(), 100.0 * result.confusion.average_recognition_rate(),
+                result.test_images);
+  semantics::save_confusion_matrix_png(path, result.confusion, semantics::evaluation_class_names(), title);
+  spdlog::info("wrote {}", path.string());
+}
+
 void run(Options& o) {
   o.evaluation.genome = resolve_genome(o.genome);
+  const std::vector<std::string> descriptors = semantics::expand_descriptor_names(o.descriptors);
+  const bool several = descriptors.size() > 1;
   // Output names are checked now, not after an hour of training.
   if (!o.confusion.empty() && o.confusion.extension() != ".png")
     fail_file(o.confusion, "expected a file name ending in .png for the confusion matrix");
-  if (!o.evaluation.model_out.empty()) semantics::require_model_file_name(o.evaluation.model_out);
-  const semantics::LabelEvaluation result = semantics::evaluate_labels(o.evaluation);
-  print_summary(result);
-  if (!o.json.empty()) {
-    write_json(o.json, semantics::to_json(result, o.evaluation));
-    spdlog::info("wrote {}", o.json.string());
+  if (!o.evaluation.model_out.empty()) {
+    semantics::require_model_file_name(o.evaluation.model_out);
+    if (several) throw Error("--model-out: a model file holds one descriptor's forest; give one --descriptor");
   }
-  if (!o.confusion.empty()) {
-    char title[200];
-    std::snprintf(title, sizeof title, "%s: overall %.1f %%, average %.1f %% (%zu test images)", result.descriptor.c_str(),
-                  100.0 * result.confusion.overall_recognition_rate(),
-                  100.0 * result.confusion.average_recognition_rate(), result.test_images);
-    semantics::save_confusion_matrix_png(o.confusion, result.confusion, semantics::evaluation_class_names(), title);
-    spdlog::info("wrote {}", o.confusion.string());
+  std::vector<semantics::LabelEvaluation> results;
+  Json reports = Json::array();
+  for (const std::string& name : descriptors) {
+    o.evaluation.descriptor = name;
+    results.push_back(semantics::evaluate_labels(o.evaluation));
+    print_summary(results.back());
+    reports.push_back(semantics::to_json(results.back(), o.evaluation));
+    if (!o.confusion.empty()) save_confusion(confusion_path(o, name, several), results.back());
+  }
+  if (several) std::printf("\n%s", semantics::comparison_table(results).c_str());
+  if (!o.json.empty()) {
+    Json report = Json::object();
+    if (several) {
+      report["comparison"] = semantics::comparison_json(results);
+      report["runs"] = std::move(reports);
+    }
+    write_json(o.json, several ? report : semantics::to_json(results.front(), o.evaluation));
+    spdlog::info("wrote {}", o.json.string());
   }
 }
 
@@ -88,7 +117,12 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
       "labels", "Train a random forest on a LabelMeFacade-style dataset's train.txt and report keypoint labelling on test.txt");
   cmd->add_option("--dataset", e.dataset, "Dataset folder: train.txt, test.txt, images/, labels/")->required();
   std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames), std::end(semantics::kPointDescriptorNames));
-  cmd->add_option("--descriptor", e.descriptor, "Descriptor to evaluate")
+  names.emplace_back("all");
+  cmd->add_option("--descriptor", options->descriptors,
+                  "Descriptors to evaluate (comma-separated or repeated), or all: one run each on the same keypoints "
+                  "and training sample with the same forest settings, then a comparison table; with several, the "
+                  "JSON holds {comparison, runs} and --confusion NAME.png becomes NAME_<descriptor>.png")
+      ->delimiter(',')
       ->check(CLI::IsMember(names))
       ->capture_default_str();
   cmd->add_option("--genome", options->genome,

@@ -1,5 +1,6 @@
 #include "semantics/point_descriptors/point_descriptor.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/util/error.hpp"
@@ -10,6 +11,21 @@
 #include "semantics/text.hpp"
 
 namespace facadeslam::semantics {
+
+std::vector<std::string> expand_descriptor_names(const std::vector<std::string>& given) {
+  std::vector<std::string> names;
+  const auto add = [&](std::string_view n) {
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.emplace_back(n);
+  };
+  for (const std::string& name : given) {
+    if (name != "all") {
+      add(name);
+      continue;
+    }
+    for (const std::string_view n : kPointDescriptorNames) add(n);
+  }
+  return names;
+}
 
 std::unique_ptr<PointDescriptor> make_point_descriptor(std::string_view name, const Genome& genome) {
   const int patch_side = 2 * genome.decode().patch_radius + 1;

@@ -32,6 +32,10 @@ class PointDescriptor {
 // The names make_point_descriptor accepts, in the order reports list them.
 inline constexpr std::string_view kPointDescriptorNames[] = {"modular", "sift", "opponent-sift", "orb", "edd"};
 
+// The names a `--descriptor` option gave (comma-split already), with "all"
+// expanded to kPointDescriptorNames and repeats dropped, first mention first.
+std::vector<std::string> expand_descriptor_names(const std::vector<std::string>& given);
+
 // A descriptor by name. `genome` configures the modular descriptor and sets
 // the patch the SIFT variants cover (2r+1 pixels, r = the genome's patch
 // radius), so that they describe the same neighbourhood. Throws Error for an

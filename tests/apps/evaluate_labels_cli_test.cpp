@@ -68,6 +68,29 @@ TEST_F(EvaluateLabelsCli, WritesReportPlotAndModel) {
   EXPECT_TRUE(std::filesystem::exists(model));
 }
 
+TEST_F(EvaluateLabelsCli, SeveralDescriptorsInOneRunGiveAComparison) {
+  const auto json = dir_ / "out/report.json", png = dir_ / "out/confusion.png";
+  std::string args = "-q evaluate labels ";
+  args.append(dataset_option())
+      .append(" --descriptor edd,orb --max-test 1 --step 9 --json ")
+      .append(test::shell_quoted(json.string()))
+      .append(" --confusion ")
+      .append(test::shell_quoted(png.string()));
+  const auto r = run(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("| edd | 113 |"));
+  EXPECT_THAT(r.out, HasSubstr("| orb | 256 |"));
+  const std::string report = test::read_file_text(json);
+  EXPECT_THAT(report, HasSubstr("\"comparison\""));
+  EXPECT_THAT(report, HasSubstr("\"runs\""));
+  EXPECT_FALSE(cv::imread((dir_ / "out/confusion_edd.png").string()).empty());
+  EXPECT_FALSE(cv::imread((dir_ / "out/confusion_orb.png").string()).empty());
+  EXPECT_FALSE(std::filesystem::exists(png));
+  // A model file holds one forest.
+  expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --descriptor all --model-out m.yml.gz")),
+                        "one --descriptor");
+}
+
 TEST_F(EvaluateLabelsCli, GenomeAsStringOrFile) {
   const std::string bits = semantics::Genome::thesis_best().to_string();
   test::write_text(dir_ / "genome.txt", bits + "\n");

@@ -22,7 +22,7 @@ namespace facadeslam {
 namespace {
 
 // Measured 2026-11-22 (Release build): overall 0.6185, average 0.2755, 28 s
-// wall at load 10 on 2 cores.
+// wall at load 10 on 2 cores (printed, not asserted: timing belongs in bench/).
 constexpr double kMinimumOverallRate = 0.55;
 
 TEST(EvaluateLabelsRegression, ThesisGenomeOnLabelMeFacadeSubset) {
@@ -43,7 +43,6 @@ TEST(EvaluateLabelsRegression, ThesisGenomeOnLabelMeFacadeSubset) {
   std::printf("overall %.4f, average %.4f, %.1f s\n", overall, average, seconds);
   EXPECT_GT(overall, kMinimumOverallRate);
   EXPECT_TRUE(std::isfinite(average));
-  EXPECT_LT(seconds, 60.0);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "semantics/evaluation/confusion_plot.hpp"
 #include "semantics/evaluation/facade_dataset.hpp"
 #include "semantics/evaluation/grid_keypoints.hpp"
+#include "semantics/evaluation/label_comparison.hpp"
 #include "semantics/evaluation/label_evaluation.hpp"
 #include "semantics/evaluation/label_image.hpp"
 #include "semantics/evaluation/training_sample.hpp"
@@ -299,6 +300,41 @@ TEST(LabelMeFacade, LabelsUseOnlyTheNineClassColours) {
     const auto classes = classes_at(loaded.label, grid_keypoints(loaded.label.size(), 9));
     EXPECT_EQ(std::count(classes.begin(), classes.end(), kUnknownClass), 0) << train[i].name;
   }
+}
+
+}  // namespace
+}  // namespace facadeslam::semantics
+
+namespace facadeslam::semantics {
+namespace {
+
+LabelEvaluation run_with(const std::string& name, std::initializer_list<std::pair<int, int>> truth_predicted) {
+  LabelEvaluation r;
+  r.descriptor = name;
+  r.descriptor_width = 7;
+  r.test_images = 2;
+  r.test_extraction_seconds = 0.004;  // 2 ms per image
+  r.forest_seconds = 0.001;
+  r.confusion = ConfusionMatrix(9);
+  for (const auto& [t, p] : truth_predicted) r.confusion.add(t, p);
+  return r;
+}
+
+TEST(LabelComparison, OneRowPerDescriptorWithRecallsAndTimes) {
+  const std::vector<LabelEvaluation> runs{run_with("modular", {{1, 1}, {1, 1}, {8, 8}, {8, 1}}),
+                                          run_with("sift", {{1, 8}, {1, 1}, {8, 8}, {8, 8}})};
+  const std::string table = comparison_table(runs);
+  EXPECT_THAT(table, HasSubstr("| modular | 7 | 75.0 | 75.0 |"));  // building 2/2, window 1/2
+  EXPECT_THAT(table, HasSubstr("| sift | 7 | 75.0 | 75.0 |"));
+  EXPECT_THAT(table, HasSubstr("| 2.0 | 0.5 |"));
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 4);  // header, rule, two rows
+  const Json json = comparison_json(runs);
+  ASSERT_TRUE(json.is_array());
+  const std::string text = json.dump();
+  EXPECT_THAT(text, HasSubstr("\"descriptor\": \"modular\""));
+  EXPECT_THAT(text, HasSubstr("\"descriptor\": \"sift\""));
+  EXPECT_THAT(text, HasSubstr("\"window\": 0.5"));
+  EXPECT_THAT(text, HasSubstr("\"extraction_ms_per_image\": 2"));
 }
 
 }  // namespace
