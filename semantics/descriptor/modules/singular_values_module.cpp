@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "semantics/descriptor/descriptor_params.hpp"
 #include "semantics/descriptor/kernel_support.hpp"
@@ -20,9 +21,13 @@ constexpr int kMaxSteps = 3 * kStepsPerValue;
 // more than the whole bidiagonalisation at these sizes (m <= 9).
 void tridiagonal_eigenvalues(double* d, double* e, int m) {
   e[m - 1] = 0.0;
-  double norm = 0.0;  // a bound on |T|: off-diagonals below 1e-15 |T| are negligible
+  // Off-diagonals below 1e-13 |T| are negligible: the eigenvalues are the
+  // squared singular values, wanted to ~1e-13 sigma1^2, i.e. each singular
+  // value to ~3e-7 sigma1 at worst. A tighter bound (1e-15) is at the level
+  // of double rounding and made the iteration run to its cap.
+  double norm = 0.0;
   for (int i = 0; i < m; ++i) norm = std::max(norm, std::abs(d[i]) + 2.0 * std::abs(e[i]));
-  const double negligible = 1e-15 * norm;
+  const double negligible = 1e-13 * norm;
   for (int l = 0; l < m; ++l) {
     for (int iteration = 0; iteration < 60; ++iteration) {
       int k = l;  // the first negligible off-diagonal at or after l splits the matrix
@@ -80,93 +85,157 @@ void symmetric_3x3_eigenvalues(double* d, const double* e) {
   d[1] = 3.0 * mean - d[0] - d[2];
 }
 
-// Vectors of W floats (lanes past the patch size stay 0 throughout),
-// processed kLanes at a time.
+// Symmetric Lanczos on the Gram matrix G = A^T A of the patch A (n x n,
+// rows of W floats with zero lanes past n). k Lanczos steps on G from a
+// start vector v span the same Krylov space as k Golub-Kahan steps on A from
+// v, so the Ritz values are the same; the difference is the cost: G takes
+// n^2 W / 2 vector multiply-adds once, after which a step is one n x n
+// product (broadcast-and-add of G's rows), where a Golub-Kahan step needs a
+// product with A and one with A^T, the first of them n horizontal sums.
 template <int W>
-struct Lanczos {
+struct GramLanczos {
   static constexpr int kBlocks = W / kLanes;
-  struct alignas(32) Vector {
+  static constexpr int kDoubleBlocks = W / 4;
+  using DoubleLanes = double __attribute__((vector_size(4 * sizeof(double))));
+  struct alignas(32) Row {
     float x[W];
+  };
+  struct alignas(32) Vector {
+    double x[W];
   };
 
   int n = 0;
-  Vector a[kMaxSize];       // the patch, row by row
-  Vector u[kMaxSteps];      // left Lanczos vectors
-  Vector v[kMaxSteps + 1];  // right Lanczos vectors
-  double scale = 0.0;       // Frobenius norm of the patch
+  Row a[kMaxSize];          // the patch, row by row
+  Vector g[kMaxSize];       // Gram matrix rows, in double for the iteration
+  Vector v[kMaxSteps + 1];  // Lanczos vectors
+  double scale = 0.0;       // squared Frobenius norm = trace(G)
 
-  [[gnu::always_inline]] static float dot(const Vector& x, const Vector& y) {
-    FloatLanes sum{}, xb, yb;
-    for (int b = 0; b < kBlocks; ++b) {
-      load_lanes(xb, x.x + b * kLanes);
-      load_lanes(yb, y.x + b * kLanes);
+  [[gnu::always_inline]] static double dot(const Vector& x, const Vector& y) {
+    DoubleLanes sum{};
+    for (int b = 0; b < kDoubleBlocks; ++b) {
+      DoubleLanes xb, yb;
+      std::memcpy(&xb, x.x + 4 * b, sizeof xb);
+      std::memcpy(&yb, y.x + 4 * b, sizeof yb);
       sum += xb * yb;
     }
-    return lane_sum(sum);
+    return (sum[0] + sum[2]) + (sum[1] + sum[3]);
   }
 
   // y += s x
-  [[gnu::always_inline]] static void add_scaled(Vector& y, float s, const Vector& x) {
+  [[gnu::always_inline]] static void add_scaled(Vector& y, double s, const Vector& x) {
     for (int j = 0; j < W; ++j) y.x[j] += s * x.x[j];
   }
 
-  [[gnu::always_inline]] static void set_zero(Vector& x) {
-    for (int j = 0; j < W; ++j) x.x[j] = 0.0f;
+  [[gnu::always_inline]] static void scale_by(Vector& x, double s) {
+    for (int j = 0; j < W; ++j) x.x[j] *= s;
   }
 
-  // y = A x: one dot product per patch row.
+  // y = G x: G's rows scaled by x and summed (G is symmetric), in two
+  // interleaved halves so that the adds of a lane block do not form one
+  // long dependent chain.
   [[gnu::always_inline]] void multiply(const Vector& x, Vector& y) const {
-    set_zero(y);
-    for (int i = 0; i < n; ++i) y.x[i] = dot(a[i], x);
+    DoubleLanes even[kDoubleBlocks] = {}, odd[kDoubleBlocks] = {};
+    int i = 0;
+    for (; i + 1 < n; i += 2) {
+      const double s = x.x[i], t = x.x[i + 1];
+      for (int b = 0; b < kDoubleBlocks; ++b) {
+        DoubleLanes row, next;
+        std::memcpy(&row, g[i].x + 4 * b, sizeof row);
+        std::memcpy(&next, g[i + 1].x + 4 * b, sizeof next);
+        even[b] += s * row;
+        odd[b] += t * next;
+      }
+    }
+    if (i < n)
+      for (int b = 0; b < kDoubleBlocks; ++b) {
+        DoubleLanes row;
+        std::memcpy(&row, g[i].x + 4 * b, sizeof row);
+        even[b] += x.x[i] * row;
+      }
+    for (int b = 0; b < kDoubleBlocks; ++b) {
+      const DoubleLanes sum = even[b] + odd[b];
+      std::memcpy(y.x + 4 * b, &sum, sizeof sum);
+    }
   }
 
-  // y = A^T x: the patch rows scaled by x and summed (vector multiply-adds).
-  [[gnu::always_inline]] void multiply_transposed(const Vector& x, Vector& y) const {
-    set_zero(y);
-    for (int i = 0; i < n; ++i) add_scaled(y, x.x[i], a[i]);
+  // Rows j of G from the first column of lane block S on: G[j][k] =
+  // sum_i a[i][j] a[i][k] for k >= 8S (the rest of the row is mirrored).
+  // Four rows at a time, so that the multiply-adds form independent chains
+  // instead of waiting on one accumulator.
+  template <int S>
+  [[gnu::always_inline]] void gram_rows(int first, int last, FloatLanes (*upper)[kBlocks]) const {
+    constexpr int kRows = 4;
+    for (int j = first; j < last; j += kRows) {
+      FloatLanes acc[kRows][kBlocks - S] = {};
+      for (int i = 0; i < n; ++i) {
+        FloatLanes lanes[kBlocks - S];
+        for (int b = S; b < kBlocks; ++b) load_lanes(lanes[b - S], a[i].x + b * kLanes);
+        for (int t = 0; t < kRows; ++t) {
+          const float s = a[i].x[j + t];  // past n: a zero lane, its row is dropped
+          for (int b = S; b < kBlocks; ++b) acc[t][b - S] += s * lanes[b - S];
+        }
+      }
+      for (int t = 0; t < kRows && j + t < last; ++t)
+        for (int b = S; b < kBlocks; ++b) upper[j + t][b] = acc[t][b - S];
+    }
   }
 
-  // Classical Gram-Schmidt against the first `count` basis vectors, twice
-  // ("twice is enough" for float vectors).
-  [[gnu::always_inline]] static void orthogonalise(Vector& x, const Vector* basis, int count) {
-    for (int pass = 0; pass < 2; ++pass)
-      for (int k = 0; k < count; ++k) add_scaled(x, -dot(basis[k], x), basis[k]);
+  [[gnu::always_inline]] void gram() {
+    FloatLanes upper[kMaxSize][kBlocks];
+    gram_rows<0>(0, std::min(n, kLanes), upper);
+    if constexpr (kBlocks > 1) gram_rows<1>(kLanes, std::min(n, 2 * kLanes), upper);
+    if constexpr (kBlocks > 2) gram_rows<2>(2 * kLanes, std::min(n, 3 * kLanes), upper);
+    for (int j = 0; j < n; ++j) {
+      const int first_block = j / kLanes;
+      for (int k = 0; k < first_block * kLanes; ++k) g[j].x[k] = g[k].x[j];
+      for (int b = first_block; b < kBlocks; ++b) {
+        float lanes[kLanes];
+        store_lanes(lanes, upper[j][b]);
+        for (int k = 0; k < kLanes; ++k) g[j].x[b * kLanes + k] = lanes[k];
+      }
+    }
   }
 
   // Normalises x and returns its norm; when x has numerically vanished (the
   // Krylov space is invariant), replaces it with the unit vector least
   // represented in the basis, orthogonalised, and returns 0.
   [[gnu::always_inline]] double normalise(Vector& x, const Vector* basis, int count) const {
-    const double norm = std::sqrt(static_cast<double>(dot(x, x)));
-    if (norm > 1e-6 * scale) {
-      const float inverse = static_cast<float>(1.0 / norm);
-      for (int j = 0; j < W; ++j) x.x[j] *= inverse;
+    const double norm = std::sqrt(dot(x, x));
+    if (norm > 1e-9 * scale) {
+      scale_by(x, 1.0 / norm);
       return norm;
     }
     int best = 0;
-    float best_residual = -1.0f;
+    double best_residual = -1.0;
     for (int j = 0; j < n; ++j) {
-      float residual = 1.0f;
+      double residual = 1.0;
       for (int k = 0; k < count; ++k) residual -= basis[k].x[j] * basis[k].x[j];
       if (residual > best_residual) {
         best_residual = residual;
         best = j;
       }
     }
-    set_zero(x);
-    x.x[best] = 1.0f;
+    x = Vector{};
+    x.x[best] = 1.0;
     orthogonalise(x, basis, count);
-    const float inverse = static_cast<float>(1.0 / std::sqrt(static_cast<double>(dot(x, x))));
-    for (int j = 0; j < W; ++j) x.x[j] *= inverse;
+    scale_by(x, 1.0 / std::sqrt(dot(x, x)));
     return 0.0;
+  }
+
+  // Classical Gram-Schmidt against the first `count` basis vectors: once is
+  // enough in double for these few steps (the Ritz values agree with a full
+  // SVD to 1e-6 sigma1 either way).
+  [[gnu::always_inline]] static void orthogonalise(Vector& x, const Vector* basis, int count) {
+    double coefficients[kMaxSteps + 1];
+    for (int k = 0; k < count; ++k) coefficients[k] = dot(basis[k], x);
+    for (int k = 0; k < count; ++k) add_scaled(x, -coefficients[k], basis[k]);
   }
 
   [[gnu::always_inline]] int run(const PatchView& patch, int count, double* out) {
     n = patch.size();
     std::fill(out, out + count, 0.0);
     FloatLanes squares{};
-    Vector& column_sums = v[0];  // the start vector
-    set_zero(column_sums);
+    FloatLanes column_sums[kBlocks] = {};  // the start vector
     for (int i = 0; i < n; ++i) {
       const float* row = patch.row(i);
       for (int b = 0; b < kBlocks; ++b) {
@@ -175,45 +244,40 @@ struct Lanczos {
         keep_below(lanes, b * kLanes, n);
         store_lanes(a[i].x + b * kLanes, lanes);
         squares += lanes * lanes;
+        column_sums[b] += lanes;
       }
-      add_scaled(column_sums, 1.0f, a[i]);
     }
-    const double frobenius = lane_sum(squares);
-    if (!(frobenius > 0.0)) return 0;  // a zero patch
-    scale = std::sqrt(frobenius);
-
-    // Golub-Kahan bidiagonalisation A V = U B, B upper bidiagonal with
-    // diagonal alpha and super-diagonal beta, started from the column sums.
-    double alpha[kMaxSteps] = {}, beta[kMaxSteps] = {};
+    scale = lane_sum(squares);
+    if (!(scale > 0.0)) return 0;  // a zero patch
+    gram();
+    v[0] = Vector{};
+    for (int b = 0; b < kBlocks; ++b)
+      for (int k = 0; k < kLanes; ++k) v[0].x[b * kLanes + k] = column_sums[b][k];
     normalise(v[0], v, 0);
+
+    // T = V^T G V, tridiagonal with diagonal alpha and off-diagonal beta;
+    // its eigenvalues approximate those of G, the squared singular values.
+    double alpha[kMaxSteps] = {}, beta[kMaxSteps] = {};
     const int steps = std::min(n, kStepsPerValue * count);
     for (int m = 0; m < steps; ++m) {
-      multiply(v[m], u[m]);  // u = A v
-      orthogonalise(u[m], u, m);
-      alpha[m] = normalise(u[m], u, m);
+      Vector& w = v[m + 1];
+      multiply(v[m], w);
+      alpha[m] = dot(v[m], w);
       if (m + 1 == steps) break;  // the last beta couples to a step not taken
-      multiply_transposed(u[m], v[m + 1]);  // v' = A^T u
-      orthogonalise(v[m + 1], v, m + 1);
-      beta[m] = normalise(v[m + 1], v, m + 1);
+      orthogonalise(w, v, m + 1);
+      beta[m] = normalise(w, v, m + 1);
     }
-
-    // Singular values of B: square roots of the eigenvalues of the
-    // tridiagonal B^T B (diagonal alpha_i^2 + beta_(i-1)^2, off-diagonal
-    // alpha_i beta_i), in double.
-    double diagonal[kMaxSteps], off_diagonal[kMaxSteps];
-    for (int i = 0; i < steps; ++i) {
-      diagonal[i] = alpha[i] * alpha[i] + (i > 0 ? beta[i - 1] * beta[i - 1] : 0.0);
-      off_diagonal[i] = i + 1 < steps ? alpha[i] * beta[i] : 0.0;
-    }
-    if (steps == 3) symmetric_3x3_eigenvalues(diagonal, off_diagonal);
-    else tridiagonal_eigenvalues(diagonal, off_diagonal, steps);
+    double off_diagonal[kMaxSteps];
+    for (int i = 0; i < steps; ++i) off_diagonal[i] = i + 1 < steps ? beta[i] : 0.0;
+    if (steps == 3) symmetric_3x3_eigenvalues(alpha, off_diagonal);
+    else tridiagonal_eigenvalues(alpha, off_diagonal, steps);
     const int found = std::min(count, steps);
     for (int k = 0; k < found; ++k) {  // selection of the largest few (m <= 9)
       int largest = k;
       for (int i = k + 1; i < steps; ++i)
-        if (diagonal[i] > diagonal[largest]) largest = i;
-      std::swap(diagonal[k], diagonal[largest]);
-      out[k] = std::sqrt(std::max(diagonal[k], 0.0));
+        if (alpha[i] > alpha[largest]) largest = i;
+      std::swap(alpha[k], alpha[largest]);
+      out[k] = std::sqrt(std::max(alpha[k], 0.0));
     }
     return steps;
   }
@@ -226,15 +290,15 @@ int top_singular_values(const PatchView& patch, int count, double* out) {
   CV_Assert(count >= 1 && count <= 3);
   switch (lane_width(patch.size())) {
     case 8: {
-      Lanczos<8> lanczos;  // default-initialised: run() writes what it reads
+      GramLanczos<8> lanczos;  // default-initialised: run() writes what it reads
       return lanczos.run(patch, count, out);
     }
     case 16: {
-      Lanczos<16> lanczos;  // default-initialised: run() writes what it reads
+      GramLanczos<16> lanczos;  // default-initialised: run() writes what it reads
       return lanczos.run(patch, count, out);
     }
     case 24: {
-      Lanczos<24> lanczos;  // default-initialised: run() writes what it reads
+      GramLanczos<24> lanczos;  // default-initialised: run() writes what it reads
       return lanczos.run(patch, count, out);
     }
     default: break;

@@ -5,18 +5,19 @@
 // up to the highest active one.
 //
 // A full SVD per patch and channel would cost more than the rest of the
-// descriptor, so the values come from a Golub-Kahan-Lanczos
-// bidiagonalisation of the patch with full reorthogonalisation, started from
-// its column sums (close to the leading singular vector of a non-negative
-// patch): 3 steps per wanted value (3 for sigma1 alone, 9 for sigma1..3),
-// then the singular values of the small bidiagonal matrix. It works on the
-// singular values, not their squares, so float vectors resolve small ones,
-// and it is exact once the steps reach 2r+1. On the 3 x ~3,500 grid patches
-// of a 640 x 480 facade photo (r = 3, 6, 10) the largest deviations from a
-// full SVD were 6e-7 sigma1 for sigma1, 4e-5 sigma1 for sigma2 and 3e-7 sigma1
-// for sigma3 (tests/semantics checks 1e-4 sigma1 on synthetic textures). The
-// step count depends on the highest active value of the channel, so sigma1
-// may differ in its last float digits between genomes.
+// descriptor, so the values come from a symmetric Lanczos iteration with
+// full reorthogonalisation on the patch's Gram matrix G = A^T A (float
+// products, double iteration), started from the column sums (close to the
+// leading singular vector of a non-negative patch): 3 steps per wanted value
+// (3 for sigma1 alone, 9 for sigma1..3), then the eigenvalues of the small
+// tridiagonal matrix, whose square roots are the singular values. k steps
+// on G give the same Ritz values as k Golub-Kahan bidiagonalisation steps on
+// A; forming G once (n^2 (2r+1) / 2 multiply-adds) makes every step a
+// single n x n product instead of one with A and one with A^T. It is exact
+// once the steps reach 2r+1. The tests check 1e-4 sigma1 against a full SVD
+// on synthetic textures. The step count depends on the highest active value
+// of the channel, so sigma1 may differ in its last float digits between
+// genomes.
 #include <cstdint>
 
 #include "semantics/descriptor/modules/module_context.hpp"
