@@ -1,6 +1,7 @@
 #include "semantics/descriptor/edge_distance.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -32,34 +33,62 @@ FACADESLAM_KERNEL void column_distances(const cv::Mat& edges, cv::Mat& g) {
   }
 }
 
+// out[x] = sqrt((x - v)^2 + g[v]^2) with v = nearest[x] (exact integers
+// under the root; the loop vectorises).
+FACADESLAM_KERNEL void root_distances(const float* g, const int* nearest, int width, float* out) {
+  for (int x = 0; x < width; ++x) {
+    const int v = nearest[x];
+    const double dx = x - v;
+    const double dy = g[v];
+    out[x] = static_cast<float>(std::sqrt(dx * dx + dy * dy));
+  }
+}
+
 // Exact squared distances along a row from the column distances (the lower
 // envelope of parabolas of Felzenszwalb & Huttenlocher 2012), then roots.
-void row_distances(const float* g, int width, float* out, std::vector<int>& sites, std::vector<double>& bounds) {
-  sites.resize(static_cast<std::size_t>(width));
-  bounds.resize(static_cast<std::size_t>(width) + 1);
-  const auto height = [&](int q) { return static_cast<double>(g[q]) * g[q] + static_cast<double>(q) * q; };
+// Everything is an integer (column distances, positions), so the envelope's
+// breakpoints are kept as fractions and compared by cross-multiplication:
+// no division in the loop, and no rounding.
+struct RowBuffers {
+  std::vector<int> sites, nearest;
+  std::vector<std::int64_t> bound_num, bound_den;  // breakpoint k: bound_num[k] / bound_den[k], den > 0
+};
+
+void row_distances(const float* g, int width, float* out, RowBuffers& b) {
+  const auto n = static_cast<std::size_t>(width);
+  b.sites.resize(n);
+  b.nearest.resize(n);
+  b.bound_num.resize(n);
+  b.bound_den.resize(n);
+  const auto height = [&](int q) {
+    const auto d = static_cast<std::int64_t>(g[q]);
+    return d * d + static_cast<std::int64_t>(q) * q;
+  };
   int k = -1;
   for (int q = 0; q < width; ++q) {
     if (g[q] >= kFar) continue;  // no edge in this column: not a parabola
-    double s = -std::numeric_limits<double>::infinity();
+    const std::int64_t hq = height(q);
+    std::int64_t num = 0, den = 1;
     while (k >= 0) {
-      const int v = sites[static_cast<std::size_t>(k)];
-      s = (height(q) - height(v)) / (2.0 * (q - v));  // where parabola q starts to win over v
-      if (s > bounds[static_cast<std::size_t>(k)]) break;
+      const int v = b.sites[static_cast<std::size_t>(k)];
+      num = hq - height(v);  // parabola q wins over v right of num / den
+      den = 2 * static_cast<std::int64_t>(q - v);
+      // Breakpoint 0 is minus infinity: q never removes the first parabola.
+      if (k == 0 || num * b.bound_den[static_cast<std::size_t>(k)] > b.bound_num[static_cast<std::size_t>(k)] * den)
+        break;
       --k;
     }
     ++k;
-    sites[static_cast<std::size_t>(k)] = q;
-    bounds[static_cast<std::size_t>(k)] = k == 0 ? -std::numeric_limits<double>::infinity() : s;
+    b.sites[static_cast<std::size_t>(k)] = q;
+    b.bound_num[static_cast<std::size_t>(k)] = num;
+    b.bound_den[static_cast<std::size_t>(k)] = den;
   }
-  bounds[static_cast<std::size_t>(k) + 1] = std::numeric_limits<double>::infinity();
   int j = 0;
   for (int x = 0; x < width; ++x) {
-    while (bounds[static_cast<std::size_t>(j) + 1] < x) ++j;
-    const int v = sites[static_cast<std::size_t>(j)];
-    const double dx = x - v;
-    out[x] = static_cast<float>(std::sqrt(dx * dx + static_cast<double>(g[v]) * g[v]));
+    while (j < k && b.bound_num[static_cast<std::size_t>(j) + 1] < x * b.bound_den[static_cast<std::size_t>(j) + 1]) ++j;
+    b.nearest[static_cast<std::size_t>(x)] = b.sites[static_cast<std::size_t>(j)];
   }
+  root_distances(g, b.nearest.data(), width, out);
 }
 
 }  // namespace
@@ -72,9 +101,8 @@ void distance_to_edges(const cv::Mat& edges, cv::Mat& distance) {
   }
   cv::Mat column(edges.size(), CV_32F);
   column_distances(edges, column);
-  std::vector<int> sites;
-  std::vector<double> bounds;
-  for (int y = 0; y < edges.rows; ++y) row_distances(column.ptr<float>(y), edges.cols, distance.ptr<float>(y), sites, bounds);
+  RowBuffers buffers;
+  for (int y = 0; y < edges.rows; ++y) row_distances(column.ptr<float>(y), edges.cols, distance.ptr<float>(y), buffers);
 }
 
 }  // namespace facadeslam::semantics
