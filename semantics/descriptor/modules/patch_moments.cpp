@@ -5,6 +5,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "semantics/descriptor/descriptor_params.hpp"
 #include "semantics/descriptor/kernel_support.hpp"
 
 namespace facadeslam::semantics {
@@ -44,26 +45,42 @@ template <int Order, int W>
   }
 }
 
+// Powers d^p of the column offsets d = 0..10, split by the parity of p
+// (lanes p = 0, 2, 4 and p = 1, 3, 5; the fourth lane is unused), so that
+// the horizontal pass is two vector multiply-adds per column pair.
+using DoubleLanes = double __attribute__((vector_size(4 * sizeof(double))));
+struct OffsetPowers {
+  DoubleLanes even[kMaxPatchRadius + 1], odd[kMaxPatchRadius + 1];
+};
+constexpr OffsetPowers make_offset_powers() {
+  OffsetPowers t{};
+  for (int d = 0; d <= kMaxPatchRadius; ++d) {
+    const double v = d;
+    t.even[d] = DoubleLanes{1.0, v * v, v * v * v * v, 0.0};
+    t.odd[d] = DoubleLanes{v, v * v * v, v * v * v * v * v, 0.0};
+  }
+  return t;
+}
+constexpr OffsetPowers kOffsetPowers = make_offset_powers();
+
 template <int Order, int W>
 [[gnu::always_inline]] inline void raw_moments(const PatchView& patch, double (*raw)[kMaxOrder + 1]) {
   FloatLanes column[Order + 1][W / kLanes];
   column_sums<Order, W>(patch, column);
   const int r = patch.radius;
-  // raw[p][q] = sum_x x^p column[q][x], folded the same way in x.
+  // raw[p][q] = sum_x x^p column[q][x], folded the same way in x: even p
+  // weight the sum of columns +d and -d, odd p their difference.
   for (int q = 0; q <= Order; ++q) {
     float col[W];
     std::memcpy(col, column[q], sizeof col);
-    double acc[Order + 1] = {col[r]};  // x = 0 contributes to p = 0 only
+    DoubleLanes even_p = {static_cast<double>(col[r]), 0.0, 0.0, 0.0};  // x = 0 counts for p = 0 only
+    DoubleLanes odd_p = {};
     for (int d = 1; d <= r; ++d) {
-      const double even = static_cast<double>(col[r + d]) + col[r - d];
-      const double odd = static_cast<double>(col[r + d]) - col[r - d];
-      double power = 1.0;
-      for (int p = 0; p + q <= Order; ++p) {
-        acc[p] += power * ((p & 1) ? odd : even);
-        power *= d;
-      }
+      const double right = col[r + d], left = col[r - d];
+      even_p += kOffsetPowers.even[d] * (right + left);
+      odd_p += kOffsetPowers.odd[d] * (right - left);
     }
-    for (int p = 0; p + q <= Order; ++p) raw[p][q] = acc[p];
+    for (int p = 0; p + q <= Order; ++p) raw[p][q] = (p & 1) ? odd_p[p / 2] : even_p[p / 2];
   }
 }
 

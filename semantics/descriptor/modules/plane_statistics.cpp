@@ -10,29 +10,41 @@ namespace {
 
 template <int W>
 [[gnu::always_inline]] inline MeanStd mean_std_lanes(const PatchView& patch) {
+  constexpr int kBlocks = W / kLanes;
   const int n = patch.size();
   // Sums of deviations from the centre value keep float precision for
-  // planes with a large offset (distances, angles); columns accumulate as
-  // vector adds and are reduced once at the end.
+  // planes with a large offset (distances, angles). Even and odd rows go to
+  // separate accumulators (twice the independent adds in flight); lanes
+  // past the patch are masked once at the end.
   const float shift = patch.at(0, 0);
-  alignas(32) float sum[W] = {};
-  alignas(32) float squares[W] = {};
-  for (int i = 0; i < n; ++i) {
-    const float* row = patch.row(i);
-    for (int x = 0; x < W; ++x) {
-      const float d = row[x] - shift;
-      sum[x] += d;
-      squares[x] += d * d;
+  const FloatLanes shifts = FloatLanes{} + shift;
+  FloatLanes sum[2][kBlocks] = {}, squares[2][kBlocks] = {};
+  const auto add_row = [&](const float* row, FloatLanes* row_sum, FloatLanes* row_squares) {
+    for (int b = 0; b < kBlocks; ++b) {
+      FloatLanes d;
+      load_lanes(d, row + b * kLanes);
+      d -= shifts;
+      row_sum[b] += d;
+      row_squares[b] += d * d;
     }
+  };
+  int i = 0;
+  for (; i + 1 < n; i += 2) {
+    add_row(patch.row(i), sum[0], squares[0]);
+    add_row(patch.row(i + 1), sum[1], squares[1]);
   }
-  double s = 0.0, q = 0.0;
-  for (int x = 0; x < n; ++x) {  // lanes past the patch are ignored
-    s += sum[x];
-    q += squares[x];
+  if (i < n) add_row(patch.row(i), sum[0], squares[0]);
+  FloatLanes s = {}, q = {};
+  for (int b = 0; b < kBlocks; ++b) {
+    FloatLanes block_sum = sum[0][b] + sum[1][b], block_squares = squares[0][b] + squares[1][b];
+    keep_below(block_sum, b * kLanes, n);
+    keep_below(block_squares, b * kLanes, n);
+    s += block_sum;
+    q += block_squares;
   }
   const double count = static_cast<double>(n) * n;
-  const double mean = s / count;
-  return {shift + mean, std::sqrt(std::max(0.0, q / count - mean * mean))};
+  const double mean = lane_sum(s) / count;
+  return {shift + mean, std::sqrt(std::max(0.0, lane_sum(q) / count - mean * mean))};
 }
 
 }  // namespace
