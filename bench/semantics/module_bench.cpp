@@ -7,6 +7,8 @@
 //  - BM_ModuleExtract/<module>: extract() with only that module's values
 //    active; counter ns_per_keypoint. BM_ModulePrepare/<module>: prepare()
 //    for those values (what the per-image planes cost), per keypoint too.
+//  - BM_SingularValuesUpTo/<k>: sigma1..sigma_k of all three channels (the
+//    module's cost depends on the highest active value of each channel).
 //  - BM_ThesisGenome: prepare() + extract() of the 93-value thesis genome.
 //  - BM_Sift: cv::SIFT::compute on the same keypoints. SIFT's descriptor
 //    spans 4 x 4 cells of 3 sigma with sigma = size / 2, so size = (2r+1)/6
@@ -106,6 +108,24 @@ void BM_ModulePrepare(benchmark::State& state) {
   per_keypoint(state, thread_seconds() - start);
 }
 BENCHMARK(BM_ModulePrepare)->DenseRange(0, kModuleCount - 1)->Unit(benchmark::kMillisecond);
+
+// The singular-value module's cost grows with the highest active value per
+// channel (3 Lanczos steps each): sigma1..sigma_k of all three channels.
+void BM_SingularValuesUpTo(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  DescriptorParams p = only_module(Module::singular_values);
+  p.activation.reset();
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < k; ++i) p.activation.set(static_cast<std::size_t>(module_offset(Module::singular_values) + 3 * c + i));
+  const PreparedImage prepared = prepare(frame(), p);
+  const double start = thread_seconds();
+  for (auto _ : state) {
+    cv::Mat d = extract(prepared, grid_keypoints(), p);
+    benchmark::DoNotOptimize(d.data);
+  }
+  per_keypoint(state, thread_seconds() - start);
+}
+BENCHMARK(BM_SingularValuesUpTo)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
 double g_sift_seconds = 0.0;  // per image, from BM_Sift (registered first)
 

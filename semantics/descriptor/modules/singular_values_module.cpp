@@ -105,8 +105,9 @@ struct GramLanczos {
   };
 
   int n = 0;
-  Row a[kMaxSize];          // the patch, row by row
-  Vector g[kMaxSize];       // Gram matrix rows, in double for the iteration
+  // Rows in groups of 8 for the dot products; rows past n stay zero.
+  static constexpr int kRowGroups = kBlocks;  // n <= W
+  Row a[kRowGroups * kLanes];  // the patch, row by row
   Vector v[kMaxSteps + 1];  // Lanczos vectors
   double scale = 0.0;       // squared Frobenius norm = trace(G)
 
@@ -130,69 +131,66 @@ struct GramLanczos {
     for (int j = 0; j < W; ++j) x.x[j] *= s;
   }
 
-  // y = G x: G's rows scaled by x and summed (G is symmetric), in two
-  // interleaved halves so that the adds of a lane block do not form one
-  // long dependent chain.
+  // Sums of 8 vectors' lanes, as the 8 lanes of one vector: a transpose
+  // folded into the adds (3 levels of pairwise shuffles). Vectors are
+  // passed by reference: by value their ABI would depend on the target.
+  [[gnu::always_inline]] static void lane_sums(const FloatLanes* x, FloatLanes& out) {
+    FloatLanes pairs[4];  // pairs[k] = lane-pair sums of x[2k] and x[2k+1], interleaved
+    for (int k = 0; k < 4; ++k)
+      pairs[k] = __builtin_shufflevector(x[2 * k], x[2 * k + 1], 0, 8, 2, 10, 4, 12, 6, 14) +
+                 __builtin_shufflevector(x[2 * k], x[2 * k + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+    // quads[k] = [x(4k) x(4k+1) x(4k+2) x(4k+3)] sums of the low and high lane halves
+    FloatLanes quads[2];
+    for (int k = 0; k < 2; ++k)
+      quads[k] = __builtin_shufflevector(pairs[2 * k], pairs[2 * k + 1], 0, 1, 8, 9, 4, 5, 12, 13) +
+                 __builtin_shufflevector(pairs[2 * k], pairs[2 * k + 1], 2, 3, 10, 11, 6, 7, 14, 15);
+    out = __builtin_shufflevector(quads[0], quads[1], 0, 1, 2, 3, 8, 9, 10, 11) +
+          __builtin_shufflevector(quads[0], quads[1], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+
+  // y = G x = A^T (A x) without forming G: the row dot products a_i . x
+  // (lane products reduced eight rows at a time), then the rows scaled by
+  // them and summed. Float products, double result.
   [[gnu::always_inline]] void multiply(const Vector& x, Vector& y) const {
-    DoubleLanes even[kDoubleBlocks] = {}, odd[kDoubleBlocks] = {};
-    int i = 0;
-    for (; i + 1 < n; i += 2) {
-      const double s = x.x[i], t = x.x[i + 1];
-      for (int b = 0; b < kDoubleBlocks; ++b) {
-        DoubleLanes row, next;
-        std::memcpy(&row, g[i].x + 4 * b, sizeof row);
-        std::memcpy(&next, g[i + 1].x + 4 * b, sizeof next);
-        even[b] += s * row;
-        odd[b] += t * next;
-      }
-    }
-    if (i < n)
-      for (int b = 0; b < kDoubleBlocks; ++b) {
-        DoubleLanes row;
-        std::memcpy(&row, g[i].x + 4 * b, sizeof row);
-        even[b] += x.x[i] * row;
-      }
-    for (int b = 0; b < kDoubleBlocks; ++b) {
-      const DoubleLanes sum = even[b] + odd[b];
-      std::memcpy(y.x + 4 * b, &sum, sizeof sum);
-    }
-  }
-
-  // Rows j of G from the first column of lane block S on: G[j][k] =
-  // sum_i a[i][j] a[i][k] for k >= 8S (the rest of the row is mirrored).
-  // Four rows at a time, so that the multiply-adds form independent chains
-  // instead of waiting on one accumulator.
-  template <int S>
-  [[gnu::always_inline]] void gram_rows(int first, int last, FloatLanes (*upper)[kBlocks]) const {
-    constexpr int kRows = 4;
-    for (int j = first; j < last; j += kRows) {
-      FloatLanes acc[kRows][kBlocks - S] = {};
-      for (int i = 0; i < n; ++i) {
-        FloatLanes lanes[kBlocks - S];
-        for (int b = S; b < kBlocks; ++b) load_lanes(lanes[b - S], a[i].x + b * kLanes);
-        for (int t = 0; t < kRows; ++t) {
-          const float s = a[i].x[j + t];  // past n: a zero lane, its row is dropped
-          for (int b = S; b < kBlocks; ++b) acc[t][b - S] += s * lanes[b - S];
+    FloatLanes xf[kBlocks];
+    for (int b = 0; b < kBlocks; ++b)
+      for (int k = 0; k < kLanes; ++k) xf[b][k] = static_cast<float>(x.x[b * kLanes + k]);
+    alignas(32) float ax[kRowGroups * kLanes];
+    for (int group = 0; group < kRowGroups; ++group) {
+      FloatLanes products[kLanes];
+      for (int t = 0; t < kLanes; ++t) {
+        const Row& row = a[group * kLanes + t];  // rows past n are zero
+        FloatLanes p = {};
+        for (int b = 0; b < kBlocks; ++b) {
+          FloatLanes lanes;
+          load_lanes(lanes, row.x + b * kLanes);
+          p += lanes * xf[b];
         }
+        products[t] = p;
       }
-      for (int t = 0; t < kRows && j + t < last; ++t)
-        for (int b = S; b < kBlocks; ++b) upper[j + t][b] = acc[t][b - S];
+      FloatLanes sums;
+      lane_sums(products, sums);
+      store_lanes(ax + group * kLanes, sums);
     }
-  }
-
-  [[gnu::always_inline]] void gram() {
-    FloatLanes upper[kMaxSize][kBlocks];
-    gram_rows<0>(0, std::min(n, kLanes), upper);
-    if constexpr (kBlocks > 1) gram_rows<1>(kLanes, std::min(n, 2 * kLanes), upper);
-    if constexpr (kBlocks > 2) gram_rows<2>(2 * kLanes, std::min(n, 3 * kLanes), upper);
-    for (int j = 0; j < n; ++j) {
-      const int first_block = j / kLanes;
-      for (int k = 0; k < first_block * kLanes; ++k) g[j].x[k] = g[k].x[j];
-      for (int b = first_block; b < kBlocks; ++b) {
-        float lanes[kLanes];
-        store_lanes(lanes, upper[j][b]);
-        for (int k = 0; k < kLanes; ++k) g[j].x[b * kLanes + k] = lanes[k];
+    FloatLanes even[kBlocks] = {}, odd[kBlocks] = {};
+    int i = 0;
+    for (; i + 1 < n; i += 2)
+      for (int b = 0; b < kBlocks; ++b) {
+        FloatLanes row, next;
+        load_lanes(row, a[i].x + b * kLanes);
+        load_lanes(next, a[i + 1].x + b * kLanes);
+        even[b] += ax[i] * row;
+        odd[b] += ax[i + 1] * next;
       }
+    if (i < n)
+      for (int b = 0; b < kBlocks; ++b) {
+        FloatLanes row;
+        load_lanes(row, a[i].x + b * kLanes);
+        even[b] += ax[i] * row;
+      }
+    for (int b = 0; b < kBlocks; ++b) {
+      const FloatLanes sum = even[b] + odd[b];
+      for (int k = 0; k < kLanes; ++k) y.x[b * kLanes + k] = sum[k];
     }
   }
 
@@ -247,9 +245,9 @@ struct GramLanczos {
         column_sums[b] += lanes;
       }
     }
+    for (int i = n; i < kRowGroups * kLanes; ++i) a[i] = Row{};
     scale = lane_sum(squares);
     if (!(scale > 0.0)) return 0;  // a zero patch
-    gram();
     v[0] = Vector{};
     for (int b = 0; b < kBlocks; ++b)
       for (int k = 0; k < kLanes; ++k) v[0].x[b * kLanes + k] = column_sums[b][k];
