@@ -88,7 +88,24 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
   ExtractionStats& counts = stats ? *stats : local;
   std::array<PatchMoments, 3> moments;
   float values[kValueCount];
+  // The planes a module reads, for prefetching the next keypoint's patch.
+  std::vector<const cv::Mat*> read_planes;
+  for (int p = 0; p < kPlaneCount; ++p)
+    if (image.computed.test(static_cast<std::size_t>(p)) &&
+        required_planes(params.activation).test(static_cast<std::size_t>(p)))
+      read_planes.push_back(&image.planes[static_cast<std::size_t>(p)]);
   for (int row = 0; row < rows; ++row) {
+    if (row + 1 < rows) {
+      // Neighbouring keypoints (a grid, or corners along an edge) share most
+      // of their patch rows, so the next patch's right edge is what is not
+      // in cache yet: one prefetch per row and plane, while this keypoint
+      // computes.
+      const cv::Point2f next = keypoints[static_cast<std::size_t>(row) + 1];
+      const int right = cvRound(next.x) + image.border + params.patch_radius;
+      const int top = cvRound(next.y) + image.border - params.patch_radius;
+      for (const cv::Mat* plane : read_planes)
+        for (int i = 0; i <= 2 * params.patch_radius; ++i) __builtin_prefetch(plane->ptr<float>(top + i) + right);
+    }
     const cv::Point2f kp = keypoints[static_cast<std::size_t>(row)];
     const ModuleContext context{image, kp, cvRound(kp.x), cvRound(kp.y), params.patch_radius, moments};
     for (int c = 0; c < 3; ++c) {
