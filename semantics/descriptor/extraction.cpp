@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "core/util/error.hpp"
 #include "semantics/descriptor/module_registry.hpp"
 #include "semantics/descriptor/modules/affine_invariants_module.hpp"
+#include "semantics/descriptor/modules/strip_sums.hpp"
 
 namespace facadeslam::semantics {
 namespace {
@@ -42,6 +44,24 @@ void check_keypoint(const cv::Point2f& kp, std::size_t index, cv::Size size) {
   msg << "descriptor extraction: keypoint " << index << " at (" << kp.x << ", " << kp.y << ") is "
       << (finite ? "outside the " : "not finite in the ") << size.width << "x" << size.height << " image";
   throw Error(msg.str());
+}
+
+// Modules whose values are means and sigmas of planes (the strip shares
+// their column sums), and modules that read whole patches.
+constexpr Module kStatisticsModules[] = {Module::mean_std, Module::gevers_l, Module::gevers_c, Module::geusebroek,
+                                         Module::edge_distance};
+constexpr Module kPatchModules[] = {Module::moments2, Module::moments3, Module::moments4, Module::moments5,
+                                    Module::hu, Module::affine_invariants, Module::singular_values};
+
+template <std::size_t N>
+ActivationMask restricted_to(const ActivationMask& activation, const Module (&modules)[N]) {
+  ActivationMask out;
+  for (const Module m : modules)
+    for (int i = 0; i < module_size(m); ++i) {
+      const auto bit = static_cast<std::size_t>(module_offset(m) + i);
+      out.set(bit, activation.test(bit));
+    }
+  return out;
 }
 
 }  // namespace
@@ -86,40 +106,77 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
 
   ExtractionStats local;
   ExtractionStats& counts = stats ? *stats : local;
+  const int r = params.patch_radius;
+  // Keypoints go through row by row (patch centre y, then x): the mean/sigma
+  // and gradient-region modules add up column sums shared by the row's
+  // keypoints (strip_sums.hpp); rows of the result keep the input order.
+  std::vector<int> order(static_cast<std::size_t>(rows));
+  std::vector<cv::Point> centres(static_cast<std::size_t>(rows));
+  for (int k = 0; k < rows; ++k) {
+    order[static_cast<std::size_t>(k)] = k;
+    const cv::Point2f& kp = keypoints[static_cast<std::size_t>(k)];
+    centres[static_cast<std::size_t>(k)] = {cvRound(kp.x), cvRound(kp.y)};
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const cv::Point& pa = centres[static_cast<std::size_t>(a)];
+    const cv::Point& pb = centres[static_cast<std::size_t>(b)];
+    return pa.y != pb.y ? pa.y < pb.y : pa.x < pb.x;
+  });
+  const PlaneSet statistics = required_planes(restricted_to(params.activation, kStatisticsModules));
+  PlaneSet regions;
+  for (int c = 0; c < 3; ++c)
+    if (module_bits(params.activation, Module::gradient_angles) != 0 && image.has(angle_plane(c)) &&
+        required_planes(params.activation).test(plane_bit(angle_plane(c))))
+      regions.set(plane_bit(angle_plane(c)));
+  StripSums strip;
+  const bool use_strip = (statistics | regions).any();
+  if (use_strip) strip.configure(image, r, statistics, regions);
+  // The planes read patch by patch, for prefetching the next keypoint's.
+  std::vector<const cv::Mat*> patch_planes;
+  const PlaneSet per_patch = required_planes(restricted_to(params.activation, kPatchModules));
+  for (int p = 0; p < kPlaneCount; ++p)
+    if (per_patch.test(static_cast<std::size_t>(p))) patch_planes.push_back(&image.planes[static_cast<std::size_t>(p)]);
+
   std::array<PatchMoments, 3> moments;
   float values[kValueCount];
-  // The planes a module reads, for prefetching the next keypoint's patch.
-  std::vector<const cv::Mat*> read_planes;
-  for (int p = 0; p < kPlaneCount; ++p)
-    if (image.computed.test(static_cast<std::size_t>(p)) &&
-        required_planes(params.activation).test(static_cast<std::size_t>(p)))
-      read_planes.push_back(&image.planes[static_cast<std::size_t>(p)]);
-  for (int row = 0; row < rows; ++row) {
-    if (row + 1 < rows) {
-      // Neighbouring keypoints (a grid, or corners along an edge) share most
-      // of their patch rows, so the next patch's right edge is what is not
-      // in cache yet: one prefetch per row and plane, while this keypoint
-      // computes.
-      const cv::Point2f next = keypoints[static_cast<std::size_t>(row) + 1];
-      const int right = cvRound(next.x) + image.border + params.patch_radius;
-      const int top = cvRound(next.y) + image.border - params.patch_radius;
-      for (const cv::Mat* plane : read_planes)
-        for (int i = 0; i <= 2 * params.patch_radius; ++i) __builtin_prefetch(plane->ptr<float>(top + i) + right);
+  std::vector<int> row_centres;
+  for (std::size_t at = 0; at < order.size();) {
+    const int y = centres[static_cast<std::size_t>(order[at])].y;
+    std::size_t end = at;
+    row_centres.clear();
+    for (; end < order.size() && centres[static_cast<std::size_t>(order[end])].y == y; ++end)
+      row_centres.push_back(centres[static_cast<std::size_t>(order[end])].x);
+    if (use_strip) strip.compute(y, row_centres);
+    for (std::size_t k = at; k < end; ++k) {
+      if (k + 1 < order.size()) {
+        // Neighbouring keypoints (a grid, or corners along an edge) share
+        // most of their patch rows, so the next patch's right edge is what
+        // is not in cache yet: one prefetch per row and plane, while this
+        // keypoint computes.
+        const cv::Point next = centres[static_cast<std::size_t>(order[k + 1])];
+        const int right = next.x + image.border + r;
+        const int top = next.y + image.border - r;
+        for (const cv::Mat* plane : patch_planes)
+          for (int i = 0; i <= 2 * r; ++i) __builtin_prefetch(plane->ptr<float>(top + i) + right);
+      }
+      const int index = order[k];
+      const cv::Point centre = centres[static_cast<std::size_t>(index)];
+      const ModuleContext context{image, keypoints[static_cast<std::size_t>(index)], centre.x, centre.y, r, moments,
+                                  use_strip ? &strip : nullptr};
+      for (int c = 0; c < 3; ++c) {
+        const int moment_order = plan.moment_order[static_cast<std::size_t>(c)];
+        if (moment_order < 0) continue;
+        compute_patch_moments(context.patch(colour_plane(c)), moment_order, moments[static_cast<std::size_t>(c)]);
+        ++counts.moment_calls[static_cast<std::size_t>(c)];
+      }
+      for (const Module m : plan.modules) {
+        module_function(m)(context, plan.bits[static_cast<std::size_t>(m)], values + module_offset(m));
+        ++counts.module_calls[static_cast<std::size_t>(m)];
+      }
+      float* dst = out.ptr<float>(index);
+      for (int col = 0; col < cols; ++col) dst[col] = values[plan.columns[static_cast<std::size_t>(col)]];
     }
-    const cv::Point2f kp = keypoints[static_cast<std::size_t>(row)];
-    const ModuleContext context{image, kp, cvRound(kp.x), cvRound(kp.y), params.patch_radius, moments};
-    for (int c = 0; c < 3; ++c) {
-      const int order = plan.moment_order[static_cast<std::size_t>(c)];
-      if (order < 0) continue;
-      compute_patch_moments(context.patch(colour_plane(c)), order, moments[static_cast<std::size_t>(c)]);
-      ++counts.moment_calls[static_cast<std::size_t>(c)];
-    }
-    for (const Module m : plan.modules) {
-      module_function(m)(context, plan.bits[static_cast<std::size_t>(m)], values + module_offset(m));
-      ++counts.module_calls[static_cast<std::size_t>(m)];
-    }
-    float* dst = out.ptr<float>(row);
-    for (int col = 0; col < cols; ++col) dst[col] = values[plan.columns[static_cast<std::size_t>(col)]];
+    at = end;
   }
   counts.keypoints += static_cast<std::uint64_t>(rows);
   return out;

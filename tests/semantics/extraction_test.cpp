@@ -116,6 +116,20 @@ TEST_F(Extraction, IsDeterministic) {
   EXPECT_EQ(std::memcmp(a.data, b.data, a.total() * a.elemSize()), 0);
 }
 
+TEST_F(Extraction, ARowDoesNotDependOnTheOtherKeypoints) {
+  // Keypoints on one image row share column sums; the values of one must be
+  // the same alone, in a batch, and in any order.
+  const DescriptorParams p = Genome::thesis_best().decode();
+  const PreparedImage prepared = prepare(image, p);
+  const std::vector<cv::Point2f> batch{{50.0f, 30.0f}, {12.3f, 30.2f}, {40.0f, 29.8f}, {70.0f, 5.0f}, {41.0f, 30.0f}};
+  const cv::Mat together = extract(prepared, batch, p);
+  for (std::size_t k = 0; k < batch.size(); ++k) {
+    const cv::Mat alone = extract(prepared, {batch[k]}, p);
+    EXPECT_EQ(std::memcmp(alone.ptr<float>(0), together.ptr<float>(static_cast<int>(k)), alone.cols * sizeof(float)), 0)
+        << "keypoint " << k;
+  }
+}
+
 TEST_F(Extraction, ValuesMatchTheirDefinitions) {
   DescriptorParams p = thesis_with({"x_norm", "mean_c1", "std_c2", "mean_edge_distance"});
   const PreparedImage prepared = prepare(image, p);

@@ -56,7 +56,10 @@ void gradient_angles_module(const ModuleContext& context, std::uint64_t bits, fl
     const std::uint64_t means = (bits >> (5 * c)) & 0x1F;
     const std::uint64_t differences = (bits >> (15 + 10 * c)) & 0x3FF;
     if (!means && !differences) continue;
-    const std::array<double, 5> m = gradient_region_means(context.patch(angle_plane(c)));
+    const PlaneId plane = angle_plane(c);
+    const std::array<double, 5> m = context.strip && context.strip->has_regions(plane)
+                                        ? context.strip->region_means(plane, context.x)
+                                        : gradient_region_means(context.patch(plane));
     for (int k = 0; k < 5; ++k)
       if (bit_set(means, k)) values[5 * c + k] = static_cast<float>(m[static_cast<std::size_t>(k)]);
     for (int k = 0; k < 10; ++k)

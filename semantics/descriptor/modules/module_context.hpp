@@ -9,6 +9,8 @@
 #include <opencv2/core.hpp>
 
 #include "semantics/descriptor/modules/patch_moments.hpp"
+#include "semantics/descriptor/modules/mean_std.hpp"
+#include "semantics/descriptor/modules/strip_sums.hpp"
 #include "semantics/descriptor/prepared_image.hpp"
 
 namespace facadeslam::semantics {
@@ -19,6 +21,12 @@ struct ModuleContext {
   int x = 0, y = 0;      // the patch centre: the pixel nearest to the keypoint
   int radius = 0;
   const std::array<PatchMoments, 3>& moments;  // per colour channel (order -1 = not computed)
+  const StripSums* strip = nullptr;  // column sums of this keypoint's row, where extraction shares them
+
+  // Mean and sigma of plane p over the patch, from the strip when it has them.
+  MeanStd mean_std(PlaneId p) const {
+    return strip && strip->has_statistics(p) ? strip->mean_std(p, x) : patch_mean_std(patch(p));
+  }
 
   PatchView patch(PlaneId p) const { return image.patch(p, x, y, radius); }
 };

@@ -65,7 +65,7 @@ void mean_std_values(const ModuleContext& context, const PlaneId* planes, int k,
     const bool want_mean = bit_set(bits, i);
     const bool want_std = bit_set(bits, k + i);
     if (!want_mean && !want_std) continue;
-    const MeanStd stats = patch_mean_std(context.patch(planes[i]));
+    const MeanStd stats = context.mean_std(planes[i]);
     if (want_mean) values[i] = static_cast<float>(stats.mean);
     if (want_std) values[k + i] = static_cast<float>(stats.std);
   }

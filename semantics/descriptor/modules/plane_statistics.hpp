@@ -3,16 +3,10 @@
 // sigma), shared by every "mean and sigma of ..." module.
 #include <cstdint>
 
+#include "semantics/descriptor/modules/mean_std.hpp"
 #include "semantics/descriptor/modules/module_context.hpp"
 
 namespace facadeslam::semantics {
-
-struct MeanStd {
-  double mean = 0.0;
-  double std = 0.0;
-};
-
-MeanStd patch_mean_std(const PatchView& patch);
 
 // For a module laid out as [mean of planes[0..k), std of planes[0..k)]:
 // computes the statistics of each plane with an active mean or std and

@@ -1,0 +1,208 @@
+#include "semantics/descriptor/modules/strip_sums.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "semantics/descriptor/kernel_support.hpp"
+
+namespace facadeslam::semantics {
+namespace {
+
+// Column sums of deviations from the centre row over rows -r..r, for the
+// columns [0, count) of a span starting at `centre` (the centre row; rows
+// `stride` floats apart). Blocks of 16 columns keep their sums in registers
+// over all rows; every column adds its rows in the same order (vector lanes
+// and the scalar tail alike), so a column's sums do not depend on the span.
+FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride, int r, int count, float* sum,
+                                      float* squares) {
+  int x = 0;
+  for (; x + 2 * kLanes <= count; x += 2 * kLanes) {
+    FloatLanes c[2], s[2] = {}, q[2] = {};
+    load_lanes(c[0], centre + x);
+    load_lanes(c[1], centre + x + kLanes);
+    for (int dy = -r; dy <= r; ++dy) {
+      const float* row = centre + dy * stride + x;
+      for (int b = 0; b < 2; ++b) {
+        FloatLanes d;
+        load_lanes(d, row + b * kLanes);
+        d -= c[b];
+        s[b] += d;
+        q[b] += d * d;
+      }
+    }
+    for (int b = 0; b < 2; ++b) {
+      store_lanes(sum + x + b * kLanes, s[b]);
+      store_lanes(squares + x + b * kLanes, q[b]);
+    }
+  }
+  for (; x < count; ++x) {
+    float s = 0.0f, q = 0.0f;
+    for (int dy = -r; dy <= r; ++dy) {
+      const float d = centre[dy * stride + x] - centre[x];
+      s += d;
+      q += d * d;
+    }
+    sum[x] = s;
+    squares[x] = q;
+  }
+}
+
+// Column sums of the r rows above and the r rows below the centre row
+// (from the farthest row inward above, from the nearest outward below),
+// blocked like deviation_sums.
+FACADESLAM_KERNEL void half_sums(const float* centre, std::ptrdiff_t stride, int r, int count, float* top,
+                                 float* bottom) {
+  int x = 0;
+  for (; x + 2 * kLanes <= count; x += 2 * kLanes) {
+    FloatLanes t[2] = {}, b[2] = {};
+    for (int d = 1; d <= r; ++d) {
+      const float* up = centre + (d - r - 1) * stride + x;
+      const float* down = centre + d * stride + x;
+      for (int k = 0; k < 2; ++k) {
+        FloatLanes u, v;
+        load_lanes(u, up + k * kLanes);
+        load_lanes(v, down + k * kLanes);
+        t[k] += u;
+        b[k] += v;
+      }
+    }
+    for (int k = 0; k < 2; ++k) {
+      store_lanes(top + x + k * kLanes, t[k]);
+      store_lanes(bottom + x + k * kLanes, b[k]);
+    }
+  }
+  for (; x < count; ++x) {
+    float t = 0.0f, b = 0.0f;
+    for (int d = 1; d <= r; ++d) {
+      t += centre[(d - r - 1) * stride + x];
+      b += centre[d * stride + x];
+    }
+    top[x] = t;
+    bottom[x] = b;
+  }
+}
+
+// From deviations d = v - c over n rows: sum v = sum d + n c, sum v^2 =
+// sum d^2 + 2 c sum d + n c^2.
+FACADESLAM_KERNEL void plain_sums(const float* sum, const float* squares, const float* centre, int n, double* total,
+                                  double* total_squares, int count) {
+  for (int x = 0; x < count; ++x) {
+    const double c = centre[x];
+    total[x] = sum[x] + n * c;
+    total_squares[x] = squares[x] + c * (2.0 * sum[x] + n * c);
+  }
+}
+
+// Mean and sigma of a patch from its n column totals: the totals are
+// added in a fixed order (four interleaved partial sums), the same for
+// every keypoint.
+FACADESLAM_KERNEL MeanStd window_mean_std(const double* total, const double* total_squares, int n) {
+  double sum[4] = {}, squares[4] = {};
+  int x = 0;
+  for (; x + 4 <= n; x += 4)
+    for (int k = 0; k < 4; ++k) {
+      sum[k] += total[x + k];
+      squares[k] += total_squares[x + k];
+    }
+  for (int k = 0; x < n; ++x, ++k) {
+    sum[k] += total[x];
+    squares[k] += total_squares[x];
+  }
+  const double count = static_cast<double>(n) * n;
+  const double mean = ((sum[0] + sum[1]) + (sum[2] + sum[3])) / count;
+  const double mean_square = ((squares[0] + squares[1]) + (squares[2] + squares[3])) / count;
+  return {mean, std::sqrt(std::max(0.0, mean_square - mean * mean))};
+}
+
+
+}  // namespace
+
+void StripSums::configure(const PreparedImage& image, int radius, PlaneSet statistics, PlaneSet regions) {
+  CV_Assert(radius >= 1 && radius <= image.border && (statistics & regions).none() &&
+            (image.computed & (statistics | regions)) == (statistics | regions));
+  image_ = &image;
+  radius_ = radius;
+  statistics_ = statistics;
+  regions_ = regions;
+  row_ = -1;
+  for (int p = 0; p < kPlaneCount; ++p) {
+    const auto bit = static_cast<std::size_t>(p);
+    if (!statistics.test(bit) && !regions.test(bit)) continue;
+    const auto width = static_cast<std::size_t>(image.planes[bit].cols);
+    Columns& c = columns_[bit];
+    c.centre.resize(width);
+    if (statistics.test(bit)) {
+      c.sum.resize(width);
+      c.squares.resize(width);
+      c.total.resize(width);
+      c.total_squares.resize(width);
+    }
+    if (regions.test(bit)) {
+      c.top.resize(width);
+      c.bottom.resize(width);
+    }
+  }
+}
+
+void StripSums::compute_statistics(const cv::Mat& plane, int first, int last, Columns& c) const {
+  const int count = last - first;
+  const float* centre = plane.ptr<float>(row_ + image_->border) + first;
+  const auto stride = static_cast<std::ptrdiff_t>(plane.step1());
+  std::copy(centre, centre + count, c.centre.begin() + first);
+  deviation_sums(centre, stride, radius_, count, c.sum.data() + first, c.squares.data() + first);
+  plain_sums(c.sum.data() + first, c.squares.data() + first, centre, 2 * radius_ + 1, c.total.data() + first,
+             c.total_squares.data() + first, count);
+}
+
+void StripSums::compute_regions(const cv::Mat& plane, int first, int last, Columns& c) const {
+  const int count = last - first;
+  const float* centre = plane.ptr<float>(row_ + image_->border) + first;
+  std::copy(centre, centre + count, c.centre.begin() + first);
+  half_sums(centre, static_cast<std::ptrdiff_t>(plane.step1()), radius_, count, c.top.data() + first,
+            c.bottom.data() + first);
+}
+
+void StripSums::compute(int row, const std::vector<int>& centres) {
+  CV_Assert(image_ && row >= 0 && row < image_->image_size.height);
+  row_ = row;
+  spans_.clear();
+  for (const int x : centres) {
+    const int first = x + image_->border - radius_, last = x + image_->border + radius_ + 1;
+    if (!spans_.empty() && first <= spans_.back().second) spans_.back().second = std::max(spans_.back().second, last);
+    else spans_.emplace_back(first, last);
+  }
+  for (int p = 0; p < kPlaneCount; ++p) {
+    const auto bit = static_cast<std::size_t>(p);
+    const cv::Mat& plane = image_->planes[bit];
+    for (const auto& [first, last] : spans_) {
+      if (statistics_.test(bit)) compute_statistics(plane, first, last, columns_[bit]);
+      else if (regions_.test(bit)) compute_regions(plane, first, last, columns_[bit]);
+    }
+  }
+}
+
+MeanStd StripSums::mean_std(PlaneId p, int x) const {
+  const Columns& c = columns_[plane_bit(p)];
+  const auto first = static_cast<std::size_t>(x + image_->border - radius_);
+  return window_mean_std(c.total.data() + first, c.total_squares.data() + first, 2 * radius_ + 1);
+}
+
+std::array<double, 5> StripSums::region_means(PlaneId p, int x) const {
+  const Columns& c = columns_[plane_bit(p)];
+  const int r = radius_;
+  const int n = 2 * r + 1;
+  const auto at = [&](const std::vector<float>& v, int k) { return v[static_cast<std::size_t>(x + image_->border - r + k)]; };
+  double q11 = 0, q12 = 0, q21 = 0, q22 = 0, cross = static_cast<double>(at(c.top, r)) + at(c.bottom, r);
+  for (int k = 0; k < r; ++k) {
+    q11 += at(c.top, k);
+    q21 += at(c.bottom, k);
+    q12 += at(c.top, r + 1 + k);
+    q22 += at(c.bottom, r + 1 + k);
+  }
+  for (int k = 0; k < n; ++k) cross += at(c.centre, k);
+  const double quadrant = static_cast<double>(r) * r;
+  return {(q11 + q12 + q21 + q22 + cross) / (static_cast<double>(n) * n), q11 / quadrant, q12 / quadrant,
+          q21 / quadrant, q22 / quadrant};
+}
+
+}  // namespace facadeslam::semantics
