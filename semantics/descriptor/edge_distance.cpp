@@ -1,7 +1,6 @@
 #include "semantics/descriptor/edge_distance.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -33,62 +32,36 @@ FACADESLAM_KERNEL void column_distances(const cv::Mat& edges, cv::Mat& g) {
   }
 }
 
-// out[x] = sqrt((x - v)^2 + g[v]^2) with v = nearest[x] (exact integers
-// under the root; the loop vectorises).
-FACADESLAM_KERNEL void root_distances(const float* g, const int* nearest, int width, float* out) {
-  for (int x = 0; x < width; ++x) {
-    const int v = nearest[x];
-    const double dx = x - v;
-    const double dy = g[v];
-    out[x] = static_cast<float>(std::sqrt(dx * dx + dy * dy));
-  }
-}
-
-// Exact squared distances along a row from the column distances (the lower
-// envelope of parabolas of Felzenszwalb & Huttenlocher 2012), then roots.
-// Everything is an integer (column distances, positions), so the envelope's
-// breakpoints are kept as fractions and compared by cross-multiplication:
-// no division in the loop, and no rounding.
-struct RowBuffers {
-  std::vector<int> sites, nearest;
-  std::vector<std::int64_t> bound_num, bound_den;  // breakpoint k: bound_num[k] / bound_den[k], den > 0
-};
-
-void row_distances(const float* g, int width, float* out, RowBuffers& b) {
-  const auto n = static_cast<std::size_t>(width);
-  b.sites.resize(n);
-  b.nearest.resize(n);
-  b.bound_num.resize(n);
-  b.bound_den.resize(n);
-  const auto height = [&](int q) {
-    const auto d = static_cast<std::int64_t>(g[q]);
-    return d * d + static_cast<std::int64_t>(q) * q;
-  };
-  int k = -1;
-  for (int q = 0; q < width; ++q) {
-    if (g[q] >= kFar) continue;  // no edge in this column: not a parabola
-    const std::int64_t hq = height(q);
-    std::int64_t num = 0, den = 1;
-    while (k >= 0) {
-      const int v = b.sites[static_cast<std::size_t>(k)];
-      num = hq - height(v);  // parabola q wins over v right of num / den
-      den = 2 * static_cast<std::int64_t>(q - v);
-      // Breakpoint 0 is minus infinity: q never removes the first parabola.
-      if (k == 0 || num * b.bound_den[static_cast<std::size_t>(k)] > b.bound_num[static_cast<std::size_t>(k)] * den)
-        break;
-      --k;
+// Exact distances along a row from the column distances g:
+// d(x)^2 = min over q of (x - q)^2 + g(q)^2. Every value is an integer below
+// 2^24, so float arithmetic is exact. Each block of 8 pixels widens its
+// search k = 1, 2, ... until k^2 reaches the largest squared distance it has
+// found (no farther column can be closer), branch-free across the lanes:
+// dense Canny edges keep k small, and the cost follows the distances. Same
+// result as a lower envelope of parabolas (Felzenszwalb & Huttenlocher)
+// without its data-dependent branches. `squares` holds g^2 with `width`
+// columns of kFar^2 on both sides.
+FACADESLAM_KERNEL void row_distances(const float* g, int width, float* out, std::vector<float>& squares) {
+  squares.assign(static_cast<std::size_t>(3 * width + kLanes), kFar * kFar);
+  float* sq = squares.data() + width;
+  for (int q = 0; q < width; ++q) sq[q] = g[q] * g[q];
+  for (int x = 0; x < width; x += kLanes) {
+    FloatLanes best;
+    load_lanes(best, sq + x);
+    for (int k = 1; k <= width; ++k) {
+      const float reach = static_cast<float>(k) * static_cast<float>(k);
+      float worst = best[0];
+      for (int lane = 1; lane < kLanes; ++lane) worst = best[lane] > worst ? best[lane] : worst;
+      if (reach >= worst) break;
+      FloatLanes left, right;
+      load_lanes(left, sq + x - k);
+      load_lanes(right, sq + x + k);
+      const FloatLanes nearer = (left < right ? left : right) + reach;
+      best = nearer < best ? nearer : best;
     }
-    ++k;
-    b.sites[static_cast<std::size_t>(k)] = q;
-    b.bound_num[static_cast<std::size_t>(k)] = num;
-    b.bound_den[static_cast<std::size_t>(k)] = den;
+    const int count = x + kLanes <= width ? kLanes : width - x;
+    for (int lane = 0; lane < count; ++lane) out[x + lane] = static_cast<float>(std::sqrt(static_cast<double>(best[lane])));
   }
-  int j = 0;
-  for (int x = 0; x < width; ++x) {
-    while (j < k && b.bound_num[static_cast<std::size_t>(j) + 1] < x * b.bound_den[static_cast<std::size_t>(j) + 1]) ++j;
-    b.nearest[static_cast<std::size_t>(x)] = b.sites[static_cast<std::size_t>(j)];
-  }
-  root_distances(g, b.nearest.data(), width, out);
 }
 
 }  // namespace
@@ -101,8 +74,8 @@ void distance_to_edges(const cv::Mat& edges, cv::Mat& distance) {
   }
   cv::Mat column(edges.size(), CV_32F);
   column_distances(edges, column);
-  RowBuffers buffers;
-  for (int y = 0; y < edges.rows; ++y) row_distances(column.ptr<float>(y), edges.cols, distance.ptr<float>(y), buffers);
+  std::vector<float> squares;
+  for (int y = 0; y < edges.rows; ++y) row_distances(column.ptr<float>(y), edges.cols, distance.ptr<float>(y), squares);
 }
 
 }  // namespace facadeslam::semantics

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -149,6 +150,23 @@ TEST(EdgeDistance, ExactEuclideanDistanceToALine) {
     for (int x = 0; x < 40; ++x) {
       const double expected = std::min<double>(std::abs(x - 12), std::hypot(x - 30, y - 3));
       EXPECT_NEAR(distance.at<float>(y, x), expected, 1e-3) << x << "," << y;
+    }
+}
+
+TEST(EdgeDistance, EqualsBruteForceOnScatteredEdges) {
+  // Sparse random edges: empty columns, far and near pixels, image borders.
+  cv::Mat edges = cv::Mat::zeros(37, 83, CV_8U);
+  cv::RNG rng(7);
+  for (int i = 0; i < 25; ++i) edges.at<uchar>(rng.uniform(0, edges.rows), rng.uniform(0, edges.cols / 2)) = 255;
+  cv::Mat distance(edges.size(), CV_32F);
+  distance_to_edges(edges, distance);
+  std::vector<cv::Point> points;
+  cv::findNonZero(edges, points);
+  for (int y = 0; y < edges.rows; ++y)
+    for (int x = 0; x < edges.cols; ++x) {
+      double best = 1e30;
+      for (const cv::Point& p : points) best = std::min(best, std::hypot(p.x - x, p.y - y));
+      ASSERT_FLOAT_EQ(distance.at<float>(y, x), static_cast<float>(best)) << x << "," << y;
     }
 }
 
