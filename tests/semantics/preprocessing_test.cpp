@@ -205,17 +205,28 @@ namespace facadeslam::semantics {
 namespace {
 
 TEST(CannyEdges, IdenticalToOpenCvCanny) {
-  cv::Mat grey;
-  cv::cvtColor(test_util::textured_image({97, 61}, 6), grey, cv::COLOR_BGR2GRAY);
-  cv::GaussianBlur(grey, grey, {3, 3}, 0.8);
+  // Two sizes (vector blocks and a scalar tail), noise-free and noisy
+  // texture (many ties and weak maxima), every genome aperture.
   CannyBuffers buffers;
-  for (const int aperture : {3, 5})
-    for (const int low : {15, 45, 85}) {
-      cv::Mat ours, reference;
-      canny_edges(grey, aperture, low, 3 * low, ours, buffers);
-      cv::Canny(grey, reference, low, 3 * low, aperture, false);
-      EXPECT_EQ(cv::countNonZero(ours != reference), 0) << "aperture " << aperture << " low " << low;
-      EXPECT_GT(cv::countNonZero(reference), 50) << "the test image must have edges";
+  for (const cv::Size size : {cv::Size(97, 61), cv::Size(322, 241)})
+    for (const bool noisy : {false, true}) {
+      cv::Mat grey;
+      cv::cvtColor(test_util::textured_image(size, 6), grey, cv::COLOR_BGR2GRAY);
+      if (noisy) {
+        cv::Mat noise(grey.size(), CV_8U);
+        cv::randu(noise, 0, 24);
+        grey += noise;
+      }
+      cv::GaussianBlur(grey, grey, {3, 3}, 0.8);
+      for (const int aperture : {3, 5})
+        for (const int low : {5, 15, 45, 85}) {
+          cv::Mat ours, reference;
+          canny_edges(grey, aperture, low, 3 * low, ours, buffers);
+          cv::Canny(grey, reference, low, 3 * low, aperture, false);
+          EXPECT_EQ(cv::countNonZero(ours != reference), 0)
+              << size << (noisy ? " noisy" : "") << " aperture " << aperture << " low " << low;
+          EXPECT_GT(cv::countNonZero(reference), 50) << "the test image must have edges";
+        }
     }
 }
 
