@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "semantics/descriptor/kernel_support.hpp"
 
@@ -93,25 +94,29 @@ FACADESLAM_KERNEL void plain_sums(const float* sum, const float* squares, const 
   }
 }
 
-// Mean and sigma of a patch from its n column totals: the totals are
-// added in a fixed order (four interleaved partial sums), the same for
-// every keypoint.
+// Mean and sigma of a patch from its n column totals, added in a fixed
+// order (four-lane vector partial sums, then the lanes), the same for every
+// keypoint.
 FACADESLAM_KERNEL MeanStd window_mean_std(const double* total, const double* total_squares, int n) {
-  double sum[4] = {}, squares[4] = {};
+  using DoubleLanes = double __attribute__((vector_size(4 * sizeof(double))));
+  DoubleLanes sum = {}, squares = {};
   int x = 0;
-  for (; x + 4 <= n; x += 4)
-    for (int k = 0; k < 4; ++k) {
-      sum[k] += total[x + k];
-      squares[k] += total_squares[x + k];
-    }
-  for (int k = 0; x < n; ++x, ++k) {
-    sum[k] += total[x];
-    squares[k] += total_squares[x];
+  for (; x + 4 <= n; x += 4) {
+    DoubleLanes t, q;
+    std::memcpy(&t, total + x, sizeof t);
+    std::memcpy(&q, total_squares + x, sizeof q);
+    sum += t;
+    squares += q;
+  }
+  double s = (sum[0] + sum[1]) + (sum[2] + sum[3]);
+  double q = (squares[0] + squares[1]) + (squares[2] + squares[3]);
+  for (; x < n; ++x) {
+    s += total[x];
+    q += total_squares[x];
   }
   const double count = static_cast<double>(n) * n;
-  const double mean = ((sum[0] + sum[1]) + (sum[2] + sum[3])) / count;
-  const double mean_square = ((squares[0] + squares[1]) + (squares[2] + squares[3])) / count;
-  return {mean, std::sqrt(std::max(0.0, mean_square - mean * mean))};
+  const double mean = s / count;
+  return {mean, std::sqrt(std::max(0.0, q / count - mean * mean))};
 }
 
 
