@@ -11,19 +11,19 @@ namespace {
 
 // Column sums of deviations from the centre row over rows -r..r, for the
 // columns [0, count) of a span starting at `centre` (the centre row; rows
-// `stride` floats apart). Blocks of 16 columns keep their sums in registers
+// `stride` floats apart). Blocks of 32 columns keep their sums in registers
 // over all rows; every column adds its rows in the same order (vector lanes
 // and the scalar tail alike), so a column's sums do not depend on the span.
 FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride, int r, int count, float* sum,
                                       float* squares) {
+  constexpr int kBlock = 4;  // vectors per block: 32 columns, two cache lines of each row
   int x = 0;
-  for (; x + 2 * kLanes <= count; x += 2 * kLanes) {
-    FloatLanes c[2], s[2] = {}, q[2] = {};
-    load_lanes(c[0], centre + x);
-    load_lanes(c[1], centre + x + kLanes);
+  for (; x + kBlock * kLanes <= count; x += kBlock * kLanes) {
+    FloatLanes c[kBlock], s[kBlock] = {}, q[kBlock] = {};
+    for (int b = 0; b < kBlock; ++b) load_lanes(c[b], centre + x + b * kLanes);
     for (int dy = -r; dy <= r; ++dy) {
       const float* row = centre + dy * stride + x;
-      for (int b = 0; b < 2; ++b) {
+      for (int b = 0; b < kBlock; ++b) {
         FloatLanes d;
         load_lanes(d, row + b * kLanes);
         d -= c[b];
@@ -31,7 +31,7 @@ FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride
         q[b] += d * d;
       }
     }
-    for (int b = 0; b < 2; ++b) {
+    for (int b = 0; b < kBlock; ++b) {
       store_lanes(sum + x + b * kLanes, s[b]);
       store_lanes(squares + x + b * kLanes, q[b]);
     }
