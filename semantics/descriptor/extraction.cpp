@@ -64,6 +64,25 @@ ActivationMask restricted_to(const ActivationMask& activation, const Module (&mo
   return out;
 }
 
+// The angle planes among `planes` (read by the gradient-region module).
+PlaneSet angle_planes(const PlaneSet& planes) {
+  PlaneSet out;
+  for (int c = 0; c < 3; ++c) out.set(plane_bit(angle_plane(c)), planes.test(plane_bit(angle_plane(c))));
+  return out;
+}
+
+// Indices of the patch centres sorted by row, then column (stable).
+std::vector<int> row_major_order(const std::vector<cv::Point>& centres) {
+  std::vector<int> order(centres.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const cv::Point& pa = centres[static_cast<std::size_t>(a)];
+    const cv::Point& pb = centres[static_cast<std::size_t>(b)];
+    return pa.y != pb.y ? pa.y < pb.y : pa.x < pb.x;
+  });
+  return order;
+}
+
 }  // namespace
 
 ExtractionPlan plan_extraction(const ActivationMask& activation) {
@@ -107,28 +126,18 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
   ExtractionStats local;
   ExtractionStats& counts = stats ? *stats : local;
   const int r = params.patch_radius;
-  // Keypoints go through row by row (patch centre y, then x): the mean/sigma
-  // and gradient-region modules add up column sums shared by the row's
-  // keypoints (strip_sums.hpp); rows of the result keep the input order.
-  std::vector<int> order(static_cast<std::size_t>(rows));
   std::vector<cv::Point> centres(static_cast<std::size_t>(rows));
   for (int k = 0; k < rows; ++k) {
-    order[static_cast<std::size_t>(k)] = k;
     const cv::Point2f& kp = keypoints[static_cast<std::size_t>(k)];
     centres[static_cast<std::size_t>(k)] = {cvRound(kp.x), cvRound(kp.y)};
   }
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    const cv::Point& pa = centres[static_cast<std::size_t>(a)];
-    const cv::Point& pb = centres[static_cast<std::size_t>(b)];
-    return pa.y != pb.y ? pa.y < pb.y : pa.x < pb.x;
-  });
-  const PlaneSet statistics = required_planes(restricted_to(params.activation, kStatisticsModules));
-  PlaneSet regions;
-  for (int c = 0; c < 3; ++c)
-    if (module_bits(params.activation, Module::gradient_angles) != 0 && image.has(angle_plane(c)) &&
-        required_planes(params.activation).test(plane_bit(angle_plane(c))))
-      regions.set(plane_bit(angle_plane(c)));
+  // Keypoints go through row by row: the mean/sigma and gradient-region
+  // modules add up column sums shared by the row's keypoints
+  // (strip_sums.hpp); rows of the result keep the input order.
+  const std::vector<int> order = row_major_order(centres);
   StripSums strip;
+  const PlaneSet statistics = required_planes(restricted_to(params.activation, kStatisticsModules));
+  const PlaneSet regions = angle_planes(required_planes(params.activation));
   const bool use_strip = (statistics | regions).any();
   if (use_strip) strip.configure(image, r, statistics, regions);
   // The planes read patch by patch, for prefetching the next keypoint's.

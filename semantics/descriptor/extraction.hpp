@@ -41,7 +41,9 @@ ExtractionPlan plan_extraction(const ActivationMask& activation);
 // with the same preprocessing parameters (colour space, blur, Canny,
 // gradient operator) and a border >= params.patch_radius. Each keypoint's
 // patch is centred on the pixel nearest to it; a keypoint that is not finite
-// or does not round to a pixel of the image is an Error naming it.
+// or does not round to a pixel of the image is an Error naming it. A
+// keypoint's row does not depend on the other keypoints of the call (they
+// share work, never results).
 cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keypoints,
                 const DescriptorParams& params, ExtractionStats* stats = nullptr);
 
