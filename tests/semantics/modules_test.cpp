@@ -140,6 +140,27 @@ TEST(SingularValues, ThreeStepsPerWantedValue) {
   EXPECT_EQ(top_singular_values(view_of(patch(cv::Rect(7, 7, 7, 7)).clone()), 3, three), 7) << "capped at 2r+1: exact";
 }
 
+TEST(SingularValues, ChannelsInLockstepEqualOneAtATime) {
+  const cv::Mat image = test_util::textured_image({60, 50}, 4);
+  std::vector<cv::Mat> channels;
+  cv::split(image, channels);
+  std::vector<PatchBuffer> buffers;
+  for (cv::Mat& c : channels) {
+    c.convertTo(c, CV_32F, 1.0 / 255.0);
+    buffers.emplace_back(c(cv::Rect(20, 15, 21, 21)).clone());
+  }
+  const PatchView patches[3] = {buffers[0], buffers[1], buffers[2]};
+  const int counts[3] = {1, 3, 2};
+  double together[3][3];
+  int steps[3];
+  top_singular_values(patches, counts, 3, together, steps);
+  for (int c = 0; c < 3; ++c) {
+    double alone[3];
+    EXPECT_EQ(top_singular_values(patches[c], counts[c], alone), steps[c]);
+    for (int k = 0; k < counts[c]; ++k) EXPECT_EQ(together[c][k], alone[k]) << "channel " << c << " sigma" << k + 1;
+  }
+}
+
 TEST(EdgeDistance, ExactEuclideanDistanceToALine) {
   cv::Mat edges = cv::Mat::zeros(30, 40, CV_8U);
   edges.col(12).setTo(255);

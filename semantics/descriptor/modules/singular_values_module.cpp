@@ -152,12 +152,14 @@ void symmetric_3x3_eigenvalues(double* d, const double* e) {
 }
 
 // Symmetric Lanczos on the Gram matrix G = A^T A of the patch A (n x n,
-// rows of W floats with zero lanes past n). k Lanczos steps on G from a
-// start vector v span the same Krylov space as k Golub-Kahan steps on A from
-// v, so the Ritz values are the same; the difference is the cost: G takes
-// n^2 W / 2 vector multiply-adds once, after which a step is one n x n
-// product (broadcast-and-add of G's rows), where a Golub-Kahan step needs a
-// product with A and one with A^T, the first of them n horizontal sums.
+// rows of W floats with zero lanes past n), applied as A^T (A v) without
+// forming G. k Lanczos steps on G from a start vector v span the same
+// Krylov space as k Golub-Kahan steps on A from v, so the Ritz values are
+// the same; a step costs one product with A (row dot products, reduced
+// eight rows at a time) and one with A^T (broadcast-adds). The run is split
+// into start / step / finish so that several channels can be stepped in
+// lockstep: their steps are independent, and interleaving them keeps more
+// work in flight than one channel's chain of dependent steps.
 template <int W>
 struct GramLanczos {
   static constexpr int kBlocks = W / kLanes;
@@ -295,9 +297,13 @@ struct GramLanczos {
     for (int k = 0; k < count; ++k) add_scaled(x, -coefficients[k], basis[k]);
   }
 
-  [[gnu::always_inline]] int run(const PatchView& patch, int count, double* out) {
+  int count = 0, steps = 0;
+  double alpha[kMaxSteps] = {}, beta[kMaxSteps] = {};
+
+  // Loads the patch and the start vector; returns false for a zero patch.
+  [[gnu::always_inline]] bool start(const PatchView& patch, int wanted) {
     n = patch.size();
-    std::fill(out, out + count, 0.0);
+    count = wanted;
     FloatLanes squares{};
     FloatLanes column_sums[kBlocks] = {};  // the start vector
     for (int i = 0; i < n; ++i) {
@@ -313,31 +319,37 @@ struct GramLanczos {
     }
     for (int i = n; i < kRowGroups * kLanes; ++i) a[i] = Row{};
     scale = lane_sum(squares);
-    if (!(scale > 0.0)) return 0;  // a zero patch
+    steps = scale > 0.0 ? std::min(n, kStepsPerValue * count) : 0;
+    if (steps == 0) return false;  // a zero patch
     v[0] = Vector{};
     for (int b = 0; b < kBlocks; ++b)
       for (int k = 0; k < kLanes; ++k) v[0].x[b * kLanes + k] = column_sums[b][k];
     normalise(v[0], v, 0);
+    return true;
+  }
 
-    // T = V^T G V, tridiagonal with diagonal alpha and off-diagonal beta;
-    // its eigenvalues approximate those of G, the squared singular values.
-    double alpha[kMaxSteps] = {}, beta[kMaxSteps] = {};
-    const int steps = std::min(n, kStepsPerValue * count);
-    for (int m = 0; m < steps; ++m) {
-      Vector& w = v[m + 1];
-      multiply(v[m], w);
-      alpha[m] = dot(v[m], w);
-      if (m + 1 == steps) break;  // the last beta couples to a step not taken
-      orthogonalise(w, v, m + 1);
-      beta[m] = normalise(w, v, m + 1);
-    }
+  // Step m of T = V^T G V, tridiagonal with diagonal alpha and off-diagonal
+  // beta; its eigenvalues approximate those of G, the squared singular values.
+  [[gnu::always_inline]] void step(int m) {
+    Vector& w = v[m + 1];
+    multiply(v[m], w);
+    alpha[m] = dot(v[m], w);
+    if (m + 1 == steps) return;  // the last beta couples to a step not taken
+    orthogonalise(w, v, m + 1);
+    beta[m] = normalise(w, v, m + 1);
+  }
+
+  // The `count` largest singular values, descending, into out.
+  [[gnu::always_inline]] void finish(double* out) {
+    std::fill(out, out + count, 0.0);
+    if (steps == 0) return;
     double off_diagonal[kMaxSteps];
     for (int i = 0; i < steps; ++i) off_diagonal[i] = i + 1 < steps ? beta[i] : 0.0;
     const int found = std::min(count, steps);
     double top[3];
     if (steps > 3 && top_tridiagonal_eigenvalues(alpha, off_diagonal, steps, found, top)) {
       for (int k = 0; k < found; ++k) out[k] = std::sqrt(std::max(top[k], 0.0));
-      return steps;
+      return;
     }
     if (steps == 3) symmetric_3x3_eigenvalues(alpha, off_diagonal);
     else tridiagonal_eigenvalues(alpha, off_diagonal, steps);
@@ -348,42 +360,70 @@ struct GramLanczos {
       std::swap(alpha[k], alpha[largest]);
       out[k] = std::sqrt(std::max(alpha[k], 0.0));
     }
-    return steps;
   }
 };
 
 }  // namespace
 
+// Up to three patches stepped in lockstep (see GramLanczos).
+template <int W>
+[[gnu::always_inline]] inline void run_lockstep(const PatchView* patches, const int* counts, int channels,
+                                                double (*out)[3], int* steps) {
+  GramLanczos<W> lanczos[3];  // default-initialised: start() writes what the rest reads
+  int most = 0;
+  for (int c = 0; c < channels; ++c) {
+    lanczos[c].start(patches[c], counts[c]);
+    most = std::max(most, lanczos[c].steps);
+  }
+  for (int m = 0; m < most; ++m)
+    for (int c = 0; c < channels; ++c)
+      if (m < lanczos[c].steps) lanczos[c].step(m);
+  for (int c = 0; c < channels; ++c) {
+    lanczos[c].finish(out[c]);
+    if (steps) steps[c] = lanczos[c].steps;
+  }
+}
+
 FACADESLAM_KERNEL
-int top_singular_values(const PatchView& patch, int count, double* out) {
-  CV_Assert(count >= 1 && count <= 3);
-  switch (lane_width(patch.size())) {
-    case 8: {
-      GramLanczos<8> lanczos;  // default-initialised: run() writes what it reads
-      return lanczos.run(patch, count, out);
-    }
-    case 16: {
-      GramLanczos<16> lanczos;  // default-initialised: run() writes what it reads
-      return lanczos.run(patch, count, out);
-    }
-    case 24: {
-      GramLanczos<24> lanczos;  // default-initialised: run() writes what it reads
-      return lanczos.run(patch, count, out);
-    }
+void top_singular_values(const PatchView* patches, const int* counts, int channels, double (*out)[3], int* steps) {
+  CV_Assert(channels >= 1 && channels <= 3);
+  for (int c = 0; c < channels; ++c)
+    CV_Assert(counts[c] >= 1 && counts[c] <= 3 && patches[c].radius == patches[0].radius);
+  switch (lane_width(patches[0].size())) {
+    case 8: return run_lockstep<8>(patches, counts, channels, out, steps);
+    case 16: return run_lockstep<16>(patches, counts, channels, out, steps);
+    case 24: return run_lockstep<24>(patches, counts, channels, out, steps);
     default: break;
   }
   CV_Error(cv::Error::StsOutOfRange, "patch radius exceeds the kernels' 10 pixels");
 }
 
+int top_singular_values(const PatchView& patch, int count, double* out) {
+  double values[1][3];
+  int steps = 0;
+  top_singular_values(&patch, &count, 1, values, &steps);
+  std::copy(values[0], values[0] + count, out);
+  return steps;
+}
+
 void singular_values_module(const ModuleContext& context, std::uint64_t bits, float* values) {
+  PatchView patches[3];
+  int counts[3], channel_of[3];
+  int channels = 0;
   for (int c = 0; c < 3; ++c) {
-    const std::uint64_t channel = (bits >> (3 * c)) & 0x7;
-    if (!channel) continue;
-    const int count = channel & 4 ? 3 : channel & 2 ? 2 : 1;
-    double sigma[3];
-    top_singular_values(context.patch(colour_plane(c)), count, sigma);
-    for (int k = 0; k < count; ++k)
-      if (bit_set(channel, k)) values[3 * c + k] = static_cast<float>(sigma[k]);
+    const std::uint64_t wanted = (bits >> (3 * c)) & 0x7;
+    if (!wanted) continue;
+    patches[channels] = context.patch(colour_plane(c));
+    counts[channels] = wanted & 4 ? 3 : wanted & 2 ? 2 : 1;
+    channel_of[channels++] = c;
+  }
+  if (channels == 0) return;
+  double sigma[3][3];
+  top_singular_values(patches, counts, channels, sigma, nullptr);
+  for (int i = 0; i < channels; ++i) {
+    const int c = channel_of[i];
+    for (int k = 0; k < counts[i]; ++k)
+      if (bit_set(bits >> (3 * c), k)) values[3 * c + k] = static_cast<float>(sigma[i][k]);
   }
 }
 

@@ -28,6 +28,11 @@ namespace facadeslam::semantics {
 // to `out`; returns the number of Lanczos steps taken.
 int top_singular_values(const PatchView& patch, int count, double* out);
 
+// The same for up to three patches of one size at once (the colour channels
+// of a keypoint), stepped in lockstep: out[i] gets the counts[i] values of
+// patches[i]; steps[i] the steps taken, when steps is not null.
+void top_singular_values(const PatchView* patches, const int* counts, int channels, double (*out)[3], int* steps);
+
 void singular_values_module(const ModuleContext& context, std::uint64_t bits, float* values);
 
 }  // namespace facadeslam::semantics
