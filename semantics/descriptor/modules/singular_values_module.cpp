@@ -302,23 +302,27 @@ struct GramLanczos {
 
   // Loads the patch and the start vector; returns false for a zero patch.
   [[gnu::always_inline]] bool start(const PatchView& patch, int wanted) {
-    n = patch.size();
+    const int size = patch.size();  // a local: the stores into a[] could alias a member
+    n = size;
     count = wanted;
-    FloatLanes squares{};
+    // One accumulator per lane block: a single one would chain all 3 x 21
+    // multiply-adds one after the other.
+    FloatLanes squares[kBlocks] = {};
     FloatLanes column_sums[kBlocks] = {};  // the start vector
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < size; ++i) {
       const float* row = patch.row(i);
       for (int b = 0; b < kBlocks; ++b) {
         FloatLanes lanes;
         load_lanes(lanes, row + b * kLanes);
-        keep_below(lanes, b * kLanes, n);
+        if (b == kBlocks - 1) keep_below(lanes, b * kLanes, size);  // earlier blocks are inside the patch
         store_lanes(a[i].x + b * kLanes, lanes);
-        squares += lanes * lanes;
+        squares[b] += lanes * lanes;
         column_sums[b] += lanes;
       }
     }
-    for (int i = n; i < kRowGroups * kLanes; ++i) a[i] = Row{};
-    scale = lane_sum(squares);
+    for (int i = size; i < kRowGroups * kLanes; ++i) a[i] = Row{};
+    for (int b = 1; b < kBlocks; ++b) squares[0] += squares[b];
+    scale = lane_sum(squares[0]);
     steps = scale > 0.0 ? std::min(n, kStepsPerValue * count) : 0;
     if (steps == 0) return false;  // a zero patch
     v[0] = Vector{};
