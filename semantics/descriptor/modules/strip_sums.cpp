@@ -23,6 +23,10 @@ FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride
     for (int b = 0; b < kBlock; ++b) load_lanes(c[b], centre + x + b * kLanes);
     for (int dy = -r; dy <= r; ++dy) {
       const float* row = centre + dy * stride + x;
+      // The next block's two lines of this row: 2r+1 rows are more streams
+      // than the hardware prefetcher follows.
+      __builtin_prefetch(row + kBlock * kLanes);
+      __builtin_prefetch(row + kBlock * kLanes + 16);
       for (int b = 0; b < kBlock; ++b) {
         FloatLanes d;
         load_lanes(d, row + b * kLanes);
