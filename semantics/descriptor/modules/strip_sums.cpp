@@ -123,7 +123,6 @@ FACADESLAM_KERNEL MeanStd window_mean_std(const double* total, const double* tot
   return {mean, std::sqrt(std::max(0.0, q / count - mean * mean))};
 }
 
-
 }  // namespace
 
 void StripSums::configure(const PreparedImage& image, int radius, PlaneSet statistics, PlaneSet regions) {
