@@ -95,7 +95,7 @@ template <int Order>
     px[k] = px[k - 1] * -cx;
     py[k] = py[k - 1] * -cy;
   }
-  double shifted[Order + 1][Order + 1] = {};
+  double shifted[Order + 1][Order + 1];  // only p + q <= Order is written and read
   for (int q = 0; q <= Order; ++q)
     for (int p = 0; p + q <= Order; ++p) {
       double sum = 0.0;
@@ -112,7 +112,7 @@ template <int Order>
 
 template <int Order>
 [[gnu::always_inline]] inline void moments_of_order(const PatchView& patch, PatchMoments& out) {
-  double raw[kMaxOrder + 1][kMaxOrder + 1] = {};
+  double raw[kMaxOrder + 1][kMaxOrder + 1];  // only p + q <= Order is written and read
   switch (lane_width(patch.size())) {
     case 8: raw_moments<Order, 8>(patch, raw); break;
     case 16: raw_moments<Order, 16>(patch, raw); break;
@@ -120,7 +120,11 @@ template <int Order>
     default: CV_Error(cv::Error::StsOutOfRange, "patch radius exceeds the kernels' 10 pixels");
   }
   const double m00 = raw[0][0];
-  if (!(m00 > 0.0)) return;  // no mass: every moment stays 0
+  if (!(m00 > 0.0)) {  // no mass: every moment is 0
+    out = PatchMoments{};
+    out.order = Order;
+    return;
+  }
   const double cx = Order >= 1 ? raw[1][0] / m00 : 0.0;
   const double cy = Order >= 1 ? raw[0][1] / m00 : 0.0;
   central_moments<Order>(raw, cx, cy, out.mu);
@@ -140,7 +144,8 @@ template <int Order>
 
 FACADESLAM_KERNEL
 void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out) {
-  out = PatchMoments{};
+  // Not cleared first: every entry up to `order` is written below (clearing
+  // the whole struct cost more than the low orders themselves).
   out.order = order;
   switch (order) {
     case 0: return moments_of_order<0>(patch, out);

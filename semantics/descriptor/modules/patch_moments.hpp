@@ -21,9 +21,10 @@ struct PatchMoments {
   double eta(int p, int q) const { return mu[p][q] * eta_scale[p + q]; }
 };
 
-// Moments up to `order` (0..5). A patch whose total intensity is not
-// positive (e.g. all black) has all moments 0. Reads rows with the slack of
-// PatchView::kReadSlack.
+// Moments up to `order` (0..5): mu[p][q] for p + q <= order, every
+// eta_scale and mass_powers entry; entries above `order` keep what `out`
+// held. A patch whose total intensity is not positive (e.g. all black) has
+// all moments 0. Reads rows with the slack of PatchView::kReadSlack.
 void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out);
 
 }  // namespace facadeslam::semantics
