@@ -10,6 +10,9 @@
 //  - BM_SingularValuesUpTo/<k>: sigma1..sigma_k of all three channels (the
 //    module's cost depends on the highest active value of each channel).
 //  - BM_ThesisGenome: prepare() + extract() of the 93-value thesis genome.
+//  - BM_SiftSparse / BM_ThesisGenomeSparse: the same pair on the 300
+//    strongest FAST corners, a keyframe's worth (the semantic worker's case;
+//    prepare() dominates there).
 //  - BM_Sift: cv::SIFT::compute on the same keypoints. SIFT's descriptor
 //    spans 4 x 4 cells of 3 sigma with sigma = size / 2, so size = (2r+1)/6
 //    makes it cover the same 21 x 21 patch as ours: the like-for-like peer.
@@ -29,6 +32,7 @@
 
 #include <opencv2/core.hpp>
 #include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "bench/bench_images.hpp"
 #include "semantics/descriptor/extraction.hpp"
@@ -68,17 +72,13 @@ const std::vector<cv::Point2f>& grid_keypoints() {
   return points;
 }
 
+void per_keypoint(benchmark::State& state, double seconds, std::size_t keypoints);
+
 DescriptorParams only_module(Module m) {
   DescriptorParams p = Genome::thesis_best().decode();
   p.activation.reset();
   for (int i = 0; i < module_size(m); ++i) p.activation.set(static_cast<std::size_t>(module_offset(m) + i));
   return p;
-}
-
-void per_keypoint(benchmark::State& state, double seconds) {
-  const double n = static_cast<double>(grid_keypoints().size());
-  state.counters["ns_per_keypoint"] = 1e9 * seconds / (static_cast<double>(state.iterations()) * n);
-  state.counters["keypoints"] = n;
 }
 
 void BM_ModuleExtract(benchmark::State& state) {
@@ -91,7 +91,7 @@ void BM_ModuleExtract(benchmark::State& state) {
     cv::Mat d = extract(prepared, grid_keypoints(), p);
     benchmark::DoNotOptimize(d.data);
   }
-  per_keypoint(state, thread_seconds() - start);
+  per_keypoint(state, thread_seconds() - start, grid_keypoints().size());
 }
 BENCHMARK(BM_ModuleExtract)->DenseRange(0, kModuleCount - 1)->Unit(benchmark::kMillisecond);
 
@@ -105,7 +105,7 @@ void BM_ModulePrepare(benchmark::State& state) {
     prepare(frame(), p, prepared);
     benchmark::DoNotOptimize(prepared.planes[0].data);
   }
-  per_keypoint(state, thread_seconds() - start);
+  per_keypoint(state, thread_seconds() - start, grid_keypoints().size());
 }
 BENCHMARK(BM_ModulePrepare)->DenseRange(0, kModuleCount - 1)->Unit(benchmark::kMillisecond);
 
@@ -123,16 +123,39 @@ void BM_SingularValuesUpTo(benchmark::State& state) {
     cv::Mat d = extract(prepared, grid_keypoints(), p);
     benchmark::DoNotOptimize(d.data);
   }
-  per_keypoint(state, thread_seconds() - start);
+  per_keypoint(state, thread_seconds() - start, grid_keypoints().size());
 }
 BENCHMARK(BM_SingularValuesUpTo)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
-double g_sift_seconds = 0.0;  // per image, from BM_Sift (registered first)
+// A keyframe's worth of sparse keypoints, as the semantic worker describes
+// them: the 300 strongest FAST corners (threshold 20, non-maximum
+// suppression) at least r pixels from the border.
+const std::vector<cv::Point2f>& sparse_keypoints() {
+  static const std::vector<cv::Point2f> points = [] {
+    cv::Mat grey;
+    cv::cvtColor(frame(), grey, cv::COLOR_BGR2GRAY);
+    std::vector<cv::KeyPoint> corners;
+    cv::FAST(grey, corners, 20, true);
+    cv::KeyPointsFilter::runByImageBorder(corners, grey.size(), Genome::thesis_best().decode().patch_radius);
+    cv::KeyPointsFilter::retainBest(corners, 300);
+    std::vector<cv::Point2f> p;
+    for (const cv::KeyPoint& k : corners) p.push_back(k.pt);
+    return p;
+  }();
+  return points;
+}
 
-void BM_Sift(benchmark::State& state) {
-  const float size = static_cast<float>(2 * Genome::thesis_best().decode().patch_radius + 1) / 6.0f;
+void per_keypoint(benchmark::State& state, double seconds, std::size_t keypoints) {
+  const double n = static_cast<double>(keypoints);
+  state.counters["ns_per_keypoint"] = 1e9 * seconds / (static_cast<double>(state.iterations()) * n);
+  state.counters["keypoints"] = n;
+}
+
+// cv::SIFT::compute on `points` with KeyPoint::size `size`; returns the CPU
+// seconds per image.
+double run_sift(benchmark::State& state, const std::vector<cv::Point2f>& points, float size) {
   std::vector<cv::KeyPoint> keypoints;
-  for (const cv::Point2f& p : grid_keypoints()) keypoints.emplace_back(p, size);
+  for (const cv::Point2f& p : points) keypoints.emplace_back(p, size);
   const cv::Ptr<cv::SIFT> sift = cv::SIFT::create();
   cv::Mat descriptors;
   const double start = thread_seconds();
@@ -142,46 +165,47 @@ void BM_Sift(benchmark::State& state) {
     benchmark::DoNotOptimize(descriptors.data);
   }
   const double seconds = thread_seconds() - start;
-  g_sift_seconds = seconds / static_cast<double>(state.iterations());
-  per_keypoint(state, seconds);
+  per_keypoint(state, seconds, points.size());
   state.counters["descriptors"] = descriptors.rows;
+  return seconds / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_Sift)->Unit(benchmark::kMillisecond);
 
-double g_sift_diameter_seconds = 0.0;
-
-void BM_SiftPatchDiameter(benchmark::State& state) {
-  const float size = static_cast<float>(2 * Genome::thesis_best().decode().patch_radius + 1);
-  std::vector<cv::KeyPoint> keypoints;
-  for (const cv::Point2f& p : grid_keypoints()) keypoints.emplace_back(p, size);
-  const cv::Ptr<cv::SIFT> sift = cv::SIFT::create();
-  cv::Mat descriptors;
-  const double start = thread_seconds();
-  for (auto _ : state) {
-    std::vector<cv::KeyPoint> kps = keypoints;
-    sift->compute(frame(), kps, descriptors);
-    benchmark::DoNotOptimize(descriptors.data);
-  }
-  const double seconds = thread_seconds() - start;
-  g_sift_diameter_seconds = seconds / static_cast<double>(state.iterations());
-  per_keypoint(state, seconds);
-}
-BENCHMARK(BM_SiftPatchDiameter)->Unit(benchmark::kMillisecond)->Iterations(1);
-
-void BM_ThesisGenome(benchmark::State& state) {
-  const DescriptorParams p = Genome::thesis_best().decode();
+// prepare() + extract() with `p` on `points` (extract() alone when
+// `prepare_each` is false); returns the CPU seconds per image.
+double run_genome(benchmark::State& state, const DescriptorParams& p, const std::vector<cv::Point2f>& points,
+                  bool prepare_each = true) {
   cv::Mat d;
   PreparedImage prepared = prepare(frame(), p);
   const double start = thread_seconds();
   for (auto _ : state) {
-    prepare(frame(), p, prepared);
-    d = extract(prepared, grid_keypoints(), p);
+    if (prepare_each) prepare(frame(), p, prepared);
+    d = extract(prepared, points, p);
     benchmark::DoNotOptimize(d.data);
   }
   const double seconds = thread_seconds() - start;
-  per_keypoint(state, seconds);
+  per_keypoint(state, seconds, points.size());
   state.counters["values"] = d.cols;
-  const double per_image = seconds / static_cast<double>(state.iterations());
+  return seconds / static_cast<double>(state.iterations());
+}
+
+// Peers' seconds per image, from the SIFT benchmarks (registered first).
+double g_sift_seconds = 0.0, g_sift_diameter_seconds = 0.0, g_sift_sparse_seconds = 0.0;
+
+float sift_size() { return static_cast<float>(2 * Genome::thesis_best().decode().patch_radius + 1) / 6.0f; }
+
+void BM_Sift(benchmark::State& state) { g_sift_seconds = run_sift(state, grid_keypoints(), sift_size()); }
+BENCHMARK(BM_Sift)->Unit(benchmark::kMillisecond);
+
+void BM_SiftPatchDiameter(benchmark::State& state) {
+  g_sift_diameter_seconds = run_sift(state, grid_keypoints(), 6.0f * sift_size());
+}
+BENCHMARK(BM_SiftPatchDiameter)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_SiftSparse(benchmark::State& state) { g_sift_sparse_seconds = run_sift(state, sparse_keypoints(), sift_size()); }
+BENCHMARK(BM_SiftSparse)->Unit(benchmark::kMillisecond);
+
+void BM_ThesisGenome(benchmark::State& state) {
+  const double per_image = run_genome(state, Genome::thesis_best().decode(), grid_keypoints());
   if (g_sift_seconds > 0) state.counters["sift_over_thesis"] = g_sift_seconds / per_image;
   if (g_sift_diameter_seconds > 0) state.counters["sift_diameter_over_thesis"] = g_sift_diameter_seconds / per_image;
 }
@@ -193,32 +217,23 @@ void BM_ThesisGenomeWithoutSingularValues(benchmark::State& state) {
   DescriptorParams p = Genome::thesis_best().decode();
   for (int i = 0; i < module_size(Module::singular_values); ++i)
     p.activation.reset(static_cast<std::size_t>(module_offset(Module::singular_values) + i));
-  cv::Mat d;
-  PreparedImage prepared = prepare(frame(), p);
-  const double start = thread_seconds();
-  for (auto _ : state) {
-    prepare(frame(), p, prepared);
-    d = extract(prepared, grid_keypoints(), p);
-    benchmark::DoNotOptimize(d.data);
-  }
-  const double seconds = thread_seconds() - start;
-  per_keypoint(state, seconds);
-  state.counters["values"] = d.cols;
-  if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / (seconds / static_cast<double>(state.iterations()));
+  const double per_image = run_genome(state, p, grid_keypoints());
+  if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / per_image;
 }
 BENCHMARK(BM_ThesisGenomeWithoutSingularValues)->Unit(benchmark::kMillisecond);
 
 void BM_ThesisGenomeExtractOnly(benchmark::State& state) {
-  const DescriptorParams p = Genome::thesis_best().decode();
-  const PreparedImage prepared = prepare(frame(), p);
-  const double start = thread_seconds();
-  for (auto _ : state) {
-    cv::Mat d = extract(prepared, grid_keypoints(), p);
-    benchmark::DoNotOptimize(d.data);
-  }
-  per_keypoint(state, thread_seconds() - start);
+  run_genome(state, Genome::thesis_best().decode(), grid_keypoints(), false);
 }
 BENCHMARK(BM_ThesisGenomeExtractOnly)->Unit(benchmark::kMillisecond);
+
+// The semantic worker's case: one keyframe's sparse corners, where the
+// per-image preparation dominates.
+void BM_ThesisGenomeSparse(benchmark::State& state) {
+  const double per_image = run_genome(state, Genome::thesis_best().decode(), sparse_keypoints());
+  if (g_sift_sparse_seconds > 0) state.counters["sift_over_thesis"] = g_sift_sparse_seconds / per_image;
+}
+BENCHMARK(BM_ThesisGenomeSparse)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
