@@ -40,15 +40,24 @@ FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride
       store_lanes(squares + x + b * kLanes, q[b]);
     }
   }
-  for (; x < count; ++x) {
-    float s = 0.0f, q = 0.0f;
+  // The rest in single vectors; the last one may run up to 7 columns past
+  // the span (planes carry PatchView::kReadSlack floats after each row, and
+  // the sum arrays are as wide as the plane): those columns are junk that
+  // their own span, computed later, overwrites. Every lane does the same
+  // float operations as the blocks above, so results do not depend on
+  // where a column falls in its span.
+  for (; x < count; x += kLanes) {
+    FloatLanes c, s = {}, q = {};
+    load_lanes(c, centre + x);
     for (int dy = -r; dy <= r; ++dy) {
-      const float d = centre[dy * stride + x] - centre[x];
+      FloatLanes d;
+      load_lanes(d, centre + dy * stride + x);
+      d -= c;
       s += d;
       q += d * d;
     }
-    sum[x] = s;
-    squares[x] = q;
+    store_lanes(sum + x, s);
+    store_lanes(squares + x, q);
   }
 }
 
@@ -76,14 +85,17 @@ FACADESLAM_KERNEL void half_sums(const float* centre, std::ptrdiff_t stride, int
       store_lanes(bottom + x + k * kLanes, b[k]);
     }
   }
-  for (; x < count; ++x) {
-    float t = 0.0f, b = 0.0f;
+  for (; x < count; x += kLanes) {  // single vectors, past the span as in deviation_sums
+    FloatLanes t = {}, b = {};
     for (int d = 1; d <= r; ++d) {
-      t += centre[(d - r - 1) * stride + x];
-      b += centre[d * stride + x];
+      FloatLanes u, v;
+      load_lanes(u, centre + (d - r - 1) * stride + x);
+      load_lanes(v, centre + d * stride + x);
+      t += u;
+      b += v;
     }
-    top[x] = t;
-    bottom[x] = b;
+    store_lanes(top + x, t);
+    store_lanes(bottom + x, b);
   }
 }
 
