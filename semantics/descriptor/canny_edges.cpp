@@ -69,7 +69,13 @@ constexpr int kTan22 = 13573;  // tan(22.5 deg) << 15, rounded: OpenCV's TG22
 // L1 magnitude |dx| + |dy| into a buffer with a zero border of one pixel
 // (and zero slack after each row for the vector loads).
 FACADESLAM_KERNEL void magnitudes(const cv::Mat& dx, const cv::Mat& dy, cv::Mat& magnitude) {
-  magnitude.setTo(0);
+  magnitude.row(0).setTo(0);  // the border; the interior is written below
+  magnitude.row(magnitude.rows - 1).setTo(0);
+  for (int y = 1; y + 1 < magnitude.rows; ++y) {
+    int* m = magnitude.ptr<int>(y);
+    m[0] = 0;
+    std::fill(m + dx.cols + 1, m + magnitude.cols, 0);  // right border and the read slack
+  }
   for (int y = 0; y < dx.rows; ++y) {
     const short* gx = dx.ptr<short>(y);
     const short* gy = dy.ptr<short>(y);

@@ -10,8 +10,12 @@ constexpr int kSlack = PatchView::kReadSlack;
 }
 
 void make_padded_plane(cv::Mat& plane, cv::Size image_size, int border) {
-  plane.create(image_size.height + 2 * border, image_size.width + 2 * border + kSlack, CV_32F);
-  plane.colRange(plane.cols - kSlack, plane.cols).setTo(0.0f);
+  const int rows = image_size.height + 2 * border, cols = image_size.width + 2 * border + kSlack;
+  // create() keeps the memory exactly when the shape and type are unchanged,
+  // and nothing writes the slack but this: zero it only for new memory.
+  const bool kept = !plane.empty() && plane.rows == rows && plane.cols == cols && plane.type() == CV_32F;
+  plane.create(rows, cols, CV_32F);
+  if (!kept) plane.colRange(plane.cols - kSlack, plane.cols).setTo(0.0f);
 }
 
 cv::Mat make_padded_plane(cv::Size image_size, int border) {

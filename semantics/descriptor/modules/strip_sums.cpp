@@ -150,7 +150,6 @@ void StripSums::configure(const PreparedImage& image, int radius, PlaneSet stati
     if (!statistics.test(bit) && !regions.test(bit)) continue;
     const auto width = static_cast<std::size_t>(image.planes[bit].cols);
     Columns& c = columns_[bit];
-    c.centre.resize(width);
     if (statistics.test(bit)) {
       c.sum.resize(width);
       c.squares.resize(width);
@@ -168,7 +167,6 @@ void StripSums::compute_statistics(const cv::Mat& plane, int first, int last, Co
   const int count = last - first;
   const float* centre = plane.ptr<float>(row_ + image_->border) + first;
   const auto stride = static_cast<std::ptrdiff_t>(plane.step1());
-  std::copy(centre, centre + count, c.centre.begin() + first);
   deviation_sums(centre, stride, radius_, count, c.sum.data() + first, c.squares.data() + first);
   plain_sums(c.sum.data() + first, c.squares.data() + first, centre, 2 * radius_ + 1, c.total.data() + first,
              c.total_squares.data() + first, count);
@@ -177,7 +175,6 @@ void StripSums::compute_statistics(const cv::Mat& plane, int first, int last, Co
 void StripSums::compute_regions(const cv::Mat& plane, int first, int last, Columns& c) const {
   const int count = last - first;
   const float* centre = plane.ptr<float>(row_ + image_->border) + first;
-  std::copy(centre, centre + count, c.centre.begin() + first);
   half_sums(centre, static_cast<std::ptrdiff_t>(plane.step1()), radius_, count, c.top.data() + first,
             c.bottom.data() + first);
 }
@@ -219,7 +216,8 @@ std::array<double, 5> StripSums::region_means(PlaneId p, int x) const {
     q12 += at(c.top, r + 1 + k);
     q22 += at(c.bottom, r + 1 + k);
   }
-  for (int k = 0; k < n; ++k) cross += at(c.centre, k);
+  const float* middle = image_->planes[plane_bit(p)].ptr<float>(row_ + image_->border) + x + image_->border - r;
+  for (int k = 0; k < n; ++k) cross += middle[k];
   const double quadrant = static_cast<double>(r) * r;
   return {(q11 + q12 + q21 + q22 + cross) / (static_cast<double>(n) * n), q11 / quadrant, q12 / quadrant,
           q21 / quadrant, q22 / quadrant};

@@ -15,7 +15,8 @@
 //    deviations from the column's centre-row value, which keeps precision for
 //    planes with a large offset, then turned into plain sums;
 //  - regions (gradient-angle module): per column the sum of the r rows
-//    above and of the r rows below the centre row, and the centre value.
+//    above and of the r rows below the centre row (the centre row itself is
+//    read from the plane).
 #include <array>
 #include <utility>
 #include <vector>
@@ -46,9 +47,9 @@ class StripSums {
 
  private:
   struct Columns {
-    std::vector<float> sum, squares, centre;  // statistics: deviations from the centre value
-    std::vector<double> total, total_squares; // statistics: sums of values and squares
-    std::vector<float> top, bottom;           // regions (centre shared)
+    std::vector<float> sum, squares;           // statistics: deviations from the centre value
+    std::vector<double> total, total_squares;  // statistics: sums of values and squares
+    std::vector<float> top, bottom;            // regions (the centre row is read from the plane)
   };
   void compute_statistics(const cv::Mat& plane, int first, int last, Columns& c) const;
   void compute_regions(const cv::Mat& plane, int first, int last, Columns& c) const;
