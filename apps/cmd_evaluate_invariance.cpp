@@ -1,6 +1,5 @@
 #include "apps/cmd_evaluate_invariance.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdio>

@@ -91,17 +91,17 @@ void run(Options& o) {
     o.evaluation.descriptor = name;
     results.push_back(semantics::evaluate_labels(o.evaluation));
     print_summary(results.back());
-    reports.push_back(semantics::to_json(results.back(), o.evaluation));
+    if (several) reports.push_back(semantics::to_json(results.back(), o.evaluation));
     if (!o.confusion.empty()) save_confusion(confusion_path(o, name, several), results.back());
   }
   if (several) std::printf("\n%s", semantics::comparison_table(results).c_str());
   if (!o.json.empty()) {
-    Json report = Json::object();
+    Json report = several ? Json::object() : semantics::to_json(results.front(), o.evaluation);
     if (several) {
       report["comparison"] = semantics::comparison_json(results);
       report["runs"] = std::move(reports);
     }
-    write_json(o.json, several ? report : semantics::to_json(results.front(), o.evaluation));
+    write_json(o.json, report);
     spdlog::info("wrote {}", o.json.string());
   }
 }

@@ -32,6 +32,8 @@ constexpr int lane_width(int size) { return (size + kLanes - 1) / kLanes * kLane
 // target's ABI.
 using FloatLanes = float __attribute__((vector_size(kLanes * sizeof(float))));
 using IntLanes = int __attribute__((vector_size(kLanes * sizeof(int))));
+// Four doubles: one AVX register, for the passes that accumulate in double.
+using DoubleLanes = double __attribute__((vector_size(4 * sizeof(double))));
 
 [[gnu::always_inline]] inline void load_lanes(FloatLanes& v, const float* p) { std::memcpy(&v, p, sizeof v); }
 [[gnu::always_inline]] inline void store_lanes(float* p, const FloatLanes& v) { std::memcpy(p, &v, sizeof v); }

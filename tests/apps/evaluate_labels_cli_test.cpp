@@ -34,6 +34,10 @@ class EvaluateLabelsCli : public ::testing::Test {
     std::string s = "--dataset ";
     return s.append(test::shell_quoted(data().string()));
   }
+  // " --json J --confusion P", quoted.
+  static std::string report_options(const std::filesystem::path& json, const std::filesystem::path& png) {
+    return semantics::cat(" --json ", test::shell_quoted(json.string()), " --confusion ", test::shell_quoted(png.string()));
+  }
   // The run must fail with exactly one line on stderr.
   void expect_one_line_error(const test::CliResult& r, const std::string& mention) {
     EXPECT_NE(r.exit_code, 0);
@@ -48,10 +52,8 @@ TEST_F(EvaluateLabelsCli, WritesReportPlotAndModel) {
   const auto json = dir_ / "out/report.json", png = dir_ / "out/confusion.png", model = dir_ / "out/model.yml.gz";
   std::string args = "-q evaluate labels ";
   args.append(dataset_option())
-      .append(" --descriptor edd --step 7 --json ")
-      .append(test::shell_quoted(json.string()))
-      .append(" --confusion ")
-      .append(test::shell_quoted(png.string()))
+      .append(" --descriptor edd --step 7")
+      .append(report_options(json, png))
       .append(" --model-out ")
       .append(test::shell_quoted(model.string()));
   const auto r = run(args);
@@ -71,11 +73,7 @@ TEST_F(EvaluateLabelsCli, WritesReportPlotAndModel) {
 TEST_F(EvaluateLabelsCli, SeveralDescriptorsInOneRunGiveAComparison) {
   const auto json = dir_ / "out/report.json", png = dir_ / "out/confusion.png";
   std::string args = "-q evaluate labels ";
-  args.append(dataset_option())
-      .append(" --descriptor edd,orb --max-test 1 --step 9 --json ")
-      .append(test::shell_quoted(json.string()))
-      .append(" --confusion ")
-      .append(test::shell_quoted(png.string()));
+  args.append(dataset_option()).append(" --descriptor edd,orb --max-test 1 --step 9").append(report_options(json, png));
   const auto r = run(args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("| edd | 113 |"));

@@ -9,7 +9,6 @@ constexpr int kPairs[10][2] = {{0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {
 
 template <int W>
 [[gnu::always_inline]] inline std::array<double, 5> region_means_lanes(const PatchView& angles) {
-  const int n = angles.size();
   const int r = angles.radius;
   // Column sums of the upper and lower halves (vector adds over x), reduced
   // per quadrant at the end.
@@ -23,7 +22,13 @@ template <int W>
       bottom[x] += down[x];
     }
   }
-  const float* middle = angles.row(r);
+  return region_means_from_columns(top, bottom, angles.row(r), r);
+}
+
+}  // namespace
+
+std::array<double, 5> region_means_from_columns(const float* top, const float* bottom, const float* middle, int r) {
+  const int n = 2 * r + 1;
   double q11 = 0, q12 = 0, q21 = 0, q22 = 0, cross = static_cast<double>(top[r]) + bottom[r];
   for (int x = 0; x < r; ++x) {
     q11 += top[x];
@@ -36,8 +41,6 @@ template <int W>
   return {(q11 + q12 + q21 + q22 + cross) / (static_cast<double>(n) * n), q11 / quadrant, q12 / quadrant,
           q21 / quadrant, q22 / quadrant};
 }
-
-}  // namespace
 
 FACADESLAM_KERNEL
 std::array<double, 5> gradient_region_means(const PatchView& angles) {

@@ -17,6 +17,12 @@ namespace facadeslam::semantics {
 // Means of the whole patch and the quadrants 11, 12, 21, 22, in that order.
 std::array<double, 5> gradient_region_means(const PatchView& angles);
 
+// The same from the patch's 2r+1 column sums of the r rows above (`top`) and
+// the r rows below (`bottom`) the centre row, and the centre row itself
+// (`middle`); shared by the patch kernel and the strip sums (strip_sums.hpp)
+// so that both add up in the same order.
+std::array<double, 5> region_means_from_columns(const float* top, const float* bottom, const float* middle, int r);
+
 void gradient_angles_module(const ModuleContext& context, std::uint64_t bits, float* values);
 
 }  // namespace facadeslam::semantics

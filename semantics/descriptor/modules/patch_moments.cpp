@@ -48,7 +48,6 @@ template <int Order, int W>
 // Powers d^p of the column offsets d = 0..10, split by the parity of p
 // (lanes p = 0, 2, 4 and p = 1, 3, 5; the fourth lane is unused), so that
 // the horizontal pass is two vector multiply-adds per column pair.
-using DoubleLanes = double __attribute__((vector_size(4 * sizeof(double))));
 struct OffsetPowers {
   DoubleLanes even[kMaxPatchRadius + 1], odd[kMaxPatchRadius + 1];
 };

@@ -164,7 +164,6 @@ template <int W>
 struct GramLanczos {
   static constexpr int kBlocks = W / kLanes;
   static constexpr int kDoubleBlocks = W / 4;
-  using DoubleLanes = double __attribute__((vector_size(4 * sizeof(double))));
   struct alignas(32) Row {
     float x[W];
   };

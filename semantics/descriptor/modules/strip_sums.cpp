@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "semantics/descriptor/kernel_support.hpp"
+#include "semantics/descriptor/modules/gradient_angles_module.hpp"
 
 namespace facadeslam::semantics {
 namespace {
@@ -114,7 +115,6 @@ FACADESLAM_KERNEL void plain_sums(const float* sum, const float* squares, const 
 // order (four-lane vector partial sums, then the lanes), the same for every
 // keypoint.
 FACADESLAM_KERNEL MeanStd window_mean_std(const double* total, const double* total_squares, int n) {
-  using DoubleLanes = double __attribute__((vector_size(4 * sizeof(double))));
   DoubleLanes sum = {}, squares = {};
   int x = 0;
   for (; x + 4 <= n; x += 4) {
@@ -206,21 +206,9 @@ MeanStd StripSums::mean_std(PlaneId p, int x) const {
 
 std::array<double, 5> StripSums::region_means(PlaneId p, int x) const {
   const Columns& c = columns_[plane_bit(p)];
-  const int r = radius_;
-  const int n = 2 * r + 1;
-  const auto at = [&](const std::vector<float>& v, int k) { return v[static_cast<std::size_t>(x + image_->border - r + k)]; };
-  double q11 = 0, q12 = 0, q21 = 0, q22 = 0, cross = static_cast<double>(at(c.top, r)) + at(c.bottom, r);
-  for (int k = 0; k < r; ++k) {
-    q11 += at(c.top, k);
-    q21 += at(c.bottom, k);
-    q12 += at(c.top, r + 1 + k);
-    q22 += at(c.bottom, r + 1 + k);
-  }
-  const float* middle = image_->planes[plane_bit(p)].ptr<float>(row_ + image_->border) + x + image_->border - r;
-  for (int k = 0; k < n; ++k) cross += middle[k];
-  const double quadrant = static_cast<double>(r) * r;
-  return {(q11 + q12 + q21 + q22 + cross) / (static_cast<double>(n) * n), q11 / quadrant, q12 / quadrant,
-          q21 / quadrant, q22 / quadrant};
+  const int first = x + image_->border - radius_;
+  const float* middle = image_->planes[plane_bit(p)].ptr<float>(row_ + image_->border) + first;
+  return region_means_from_columns(c.top.data() + first, c.bottom.data() + first, middle, radius_);
 }
 
 }  // namespace facadeslam::semantics

@@ -58,7 +58,7 @@ class StripSums {
   int radius_ = 0;
   int row_ = -1;
   PlaneSet statistics_, regions_;
-  std::array<Columns, kPlaneCount> columns_;  // indexed by padded column
+  std::array<Columns, kPlaneCount> columns_;  // per plane; each vector indexed by padded column
   std::vector<std::pair<int, int>> spans_;    // merged padded column ranges [first, last)
 };
 
