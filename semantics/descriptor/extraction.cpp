@@ -8,6 +8,7 @@
 #include "core/util/error.hpp"
 #include "semantics/descriptor/module_registry.hpp"
 #include "semantics/descriptor/modules/affine_invariants_module.hpp"
+#include "semantics/descriptor/modules/singular_values_module.hpp"
 #include "semantics/descriptor/modules/strip_sums.hpp"
 
 namespace facadeslam::semantics {
@@ -146,6 +147,16 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
   for (int p = 0; p < kPlaneCount; ++p)
     if (per_patch.test(static_cast<std::size_t>(p))) patch_planes.push_back(&image.planes[static_cast<std::size_t>(p)]);
 
+  // Singular values go in batches of vector lanes over the keypoints in
+  // processing order (a lane's values do not depend on its batch).
+  std::vector<float> singular;
+  if (const std::uint64_t bits = plan.bits[static_cast<std::size_t>(Module::singular_values)]) {
+    std::vector<cv::Point> ordered(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) ordered[k] = centres[static_cast<std::size_t>(order[k])];
+    singular.resize(order.size() * kSingularValueCount);
+    singular_values_of_patches(image, ordered, r, bits, singular.data());
+  }
+
   std::array<PatchMoments, 3> moments;
   float values[kValueCount];
   std::vector<int> row_centres;
@@ -170,8 +181,14 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
       }
       const int index = order[k];
       const cv::Point centre = centres[static_cast<std::size_t>(index)];
-      const ModuleContext context{image, keypoints[static_cast<std::size_t>(index)], centre.x, centre.y, r, moments,
-                                  use_strip ? &strip : nullptr};
+      const ModuleContext context{image,
+                                  keypoints[static_cast<std::size_t>(index)],
+                                  centre.x,
+                                  centre.y,
+                                  r,
+                                  moments,
+                                  use_strip ? &strip : nullptr,
+                                  singular.empty() ? nullptr : singular.data() + k * kSingularValueCount};
       for (int c = 0; c < 3; ++c) {
         const int moment_order = plan.moment_order[static_cast<std::size_t>(c)];
         if (moment_order < 0) continue;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -140,24 +141,34 @@ TEST(SingularValues, ThreeStepsPerWantedValue) {
   EXPECT_EQ(top_singular_values(view_of(patch(cv::Rect(7, 7, 7, 7)).clone()), 3, three), 7) << "capped at 2r+1: exact";
 }
 
-TEST(SingularValues, ChannelsInLockstepEqualOneAtATime) {
-  const cv::Mat image = test_util::textured_image({60, 50}, 4);
+TEST(SingularValues, APatchInABatchEqualsThePatchAlone) {
+  // Eight lanes: six textured patches, a zero patch and the identity (whose
+  // Krylov space must be restarted), in two different orders; every lane's
+  // values and steps are bit-identical to the patch computed alone.
+  const cv::Mat image = test_util::textured_image({80, 60}, 4);
   std::vector<cv::Mat> channels;
   cv::split(image, channels);
   std::vector<PatchBuffer> buffers;
-  for (cv::Mat& c : channels) {
-    c.convertTo(c, CV_32F, 1.0 / 255.0);
-    buffers.emplace_back(c(cv::Rect(20, 15, 21, 21)).clone());
+  for (int k = 0; k < 6; ++k) {
+    cv::Mat c;
+    channels[static_cast<std::size_t>(k % 3)].convertTo(c, CV_32F, 1.0 / 255.0);
+    buffers.emplace_back(c(cv::Rect(5 + 9 * k, 10 + 3 * k, 21, 21)).clone());
   }
-  const PatchView patches[3] = {buffers[0], buffers[1], buffers[2]};
-  const int counts[3] = {1, 3, 2};
-  double together[3][3];
-  int steps[3];
-  top_singular_values(patches, counts, 3, together, steps);
-  for (int c = 0; c < 3; ++c) {
-    double alone[3];
-    EXPECT_EQ(top_singular_values(patches[c], counts[c], alone), steps[c]);
-    for (int k = 0; k < counts[c]; ++k) EXPECT_EQ(together[c][k], alone[k]) << "channel " << c << " sigma" << k + 1;
+  buffers.emplace_back(cv::Mat(cv::Mat::zeros(21, 21, CV_32F)));
+  buffers.emplace_back(cv::Mat(cv::Mat::eye(21, 21, CV_32F)));
+  for (const int count : {1, 2, 3}) {
+    std::vector<PatchView> patches(buffers.begin(), buffers.end());
+    for (int order = 0; order < 2; ++order) {
+      if (order == 1) std::reverse(patches.begin(), patches.end());
+      double together[kSingularValueLanes][3];
+      int steps[kSingularValueLanes];
+      top_singular_values(patches.data(), kSingularValueLanes, count, together, steps);
+      for (int l = 0; l < kSingularValueLanes; ++l) {
+        double alone[3];
+        EXPECT_EQ(top_singular_values(patches[static_cast<std::size_t>(l)], count, alone), steps[l]);
+        for (int k = 0; k < count; ++k) EXPECT_EQ(together[l][k], alone[k]) << "lane " << l << " sigma" << k + 1;
+      }
+    }
   }
 }
 

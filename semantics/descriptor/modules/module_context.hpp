@@ -22,6 +22,9 @@ struct ModuleContext {
   int radius = 0;
   const std::array<PatchMoments, 3>& moments;  // per colour channel (order -1 = not computed)
   const StripSums* strip = nullptr;  // column sums of this keypoint's row, where extraction shares them
+  // This keypoint's nine singular-value module values, where extraction
+  // computed them in batches (singular_values_module.hpp); else null.
+  const float* singular_values = nullptr;
 
   // Mean and sigma of plane p over the patch, from the strip when it has them.
   MeanStd mean_std(PlaneId p) const {

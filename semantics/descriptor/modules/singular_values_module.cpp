@@ -10,7 +10,6 @@
 namespace facadeslam::semantics {
 namespace {
 
-constexpr int kMaxSize = 2 * kMaxPatchRadius + 1;
 // Bidiagonalisation steps per wanted singular value (see the header).
 constexpr int kStepsPerValue = 3;
 constexpr int kMaxSteps = 3 * kStepsPerValue;
@@ -151,282 +150,375 @@ void symmetric_3x3_eigenvalues(double* d, const double* e) {
   d[1] = 3.0 * mean - d[0] - d[2];
 }
 
-// Symmetric Lanczos on the Gram matrix G = A^T A of the patch A (n x n,
-// rows of W floats with zero lanes past n), applied as A^T (A v) without
-// forming G. k Lanczos steps on G from a start vector v span the same
-// Krylov space as k Golub-Kahan steps on A from v, so the Ritz values are
-// the same; a step costs one product with A (row dot products, reduced
-// eight rows at a time) and one with A^T (broadcast-adds). The run is split
-// into start / step / finish so that several channels can be stepped in
-// lockstep: their steps are independent, and interleaving them keeps more
-// work in flight than one channel's chain of dependent steps.
-template <int W>
-struct GramLanczos {
-  static constexpr int kBlocks = W / kLanes;
-  static constexpr int kDoubleBlocks = W / 4;
-  struct alignas(32) Row {
-    float x[W];
-  };
-  struct alignas(32) Vector {
-    double x[W];
-  };
-
-  int n = 0;
-  // Rows in groups of 8 for the dot products; rows past n stay zero.
-  static constexpr int kRowGroups = kBlocks;  // n <= W
-  Row a[kRowGroups * kLanes];  // the patch, row by row
-  Vector v[kMaxSteps + 1];  // Lanczos vectors
-  double scale = 0.0;       // squared Frobenius norm = trace(G)
-
-  [[gnu::always_inline]] static double dot(const Vector& x, const Vector& y) {
-    DoubleLanes sum{};
-    for (int b = 0; b < kDoubleBlocks; ++b) {
-      DoubleLanes xb, yb;
-      std::memcpy(&xb, x.x + 4 * b, sizeof xb);
-      std::memcpy(&yb, y.x + 4 * b, sizeof yb);
-      sum += xb * yb;
-    }
-    return (sum[0] + sum[2]) + (sum[1] + sum[3]);
+// The `count` largest singular values, descending, from the Lanczos
+// tridiagonal of `steps` steps (diagonal d, off-diagonal e[0..steps-2];
+// both are overwritten): square roots of its largest eigenvalues.
+void largest_singular_values(double* d, double* e, int steps, int count, double* out) {
+  const int found = std::min(count, steps);
+  double top[3];
+  if (steps > 3 && top_tridiagonal_eigenvalues(d, e, steps, found, top)) {
+    for (int k = 0; k < found; ++k) out[k] = std::sqrt(std::max(top[k], 0.0));
+    return;
   }
-
-  // y += s x
-  [[gnu::always_inline]] static void add_scaled(Vector& y, double s, const Vector& x) {
-    for (int j = 0; j < W; ++j) y.x[j] += s * x.x[j];
-  }
-
-  [[gnu::always_inline]] static void scale_by(Vector& x, double s) {
-    for (int j = 0; j < W; ++j) x.x[j] *= s;
-  }
-
-  // Sums of 8 vectors' lanes, as the 8 lanes of one vector: a transpose
-  // folded into the adds (3 levels of pairwise shuffles). Vectors are
-  // passed by reference: by value their ABI would depend on the target.
-  [[gnu::always_inline]] static void lane_sums(const FloatLanes* x, FloatLanes& out) {
-    FloatLanes pairs[4];  // pairs[k] = lane-pair sums of x[2k] and x[2k+1], interleaved
-    for (int k = 0; k < 4; ++k)
-      pairs[k] = __builtin_shufflevector(x[2 * k], x[2 * k + 1], 0, 8, 2, 10, 4, 12, 6, 14) +
-                 __builtin_shufflevector(x[2 * k], x[2 * k + 1], 1, 9, 3, 11, 5, 13, 7, 15);
-    // quads[k] = [x(4k) x(4k+1) x(4k+2) x(4k+3)] sums of the low and high lane halves
-    FloatLanes quads[2];
-    for (int k = 0; k < 2; ++k)
-      quads[k] = __builtin_shufflevector(pairs[2 * k], pairs[2 * k + 1], 0, 1, 8, 9, 4, 5, 12, 13) +
-                 __builtin_shufflevector(pairs[2 * k], pairs[2 * k + 1], 2, 3, 10, 11, 6, 7, 14, 15);
-    out = __builtin_shufflevector(quads[0], quads[1], 0, 1, 2, 3, 8, 9, 10, 11) +
-          __builtin_shufflevector(quads[0], quads[1], 4, 5, 6, 7, 12, 13, 14, 15);
-  }
-
-  // y = G x = A^T (A x) without forming G: the row dot products a_i . x
-  // (lane products reduced eight rows at a time), then the rows scaled by
-  // them and summed. Float products, double result.
-  [[gnu::always_inline]] void multiply(const Vector& x, Vector& y) const {
-    FloatLanes xf[kBlocks];
-    for (int b = 0; b < kBlocks; ++b)
-      for (int k = 0; k < kLanes; ++k) xf[b][k] = static_cast<float>(x.x[b * kLanes + k]);
-    alignas(32) float ax[kRowGroups * kLanes];
-    for (int group = 0; group < kRowGroups; ++group) {
-      FloatLanes products[kLanes];
-      for (int t = 0; t < kLanes; ++t) {
-        const Row& row = a[group * kLanes + t];  // rows past n are zero
-        FloatLanes p = {};
-        for (int b = 0; b < kBlocks; ++b) {
-          FloatLanes lanes;
-          load_lanes(lanes, row.x + b * kLanes);
-          p += lanes * xf[b];
-        }
-        products[t] = p;
-      }
-      FloatLanes sums;
-      lane_sums(products, sums);
-      store_lanes(ax + group * kLanes, sums);
-    }
-    FloatLanes even[kBlocks] = {}, odd[kBlocks] = {};
-    int i = 0;
-    for (; i + 1 < n; i += 2)
-      for (int b = 0; b < kBlocks; ++b) {
-        FloatLanes row, next;
-        load_lanes(row, a[i].x + b * kLanes);
-        load_lanes(next, a[i + 1].x + b * kLanes);
-        even[b] += ax[i] * row;
-        odd[b] += ax[i + 1] * next;
-      }
-    if (i < n)
-      for (int b = 0; b < kBlocks; ++b) {
-        FloatLanes row;
-        load_lanes(row, a[i].x + b * kLanes);
-        even[b] += ax[i] * row;
-      }
-    for (int b = 0; b < kBlocks; ++b) {
-      const FloatLanes sum = even[b] + odd[b];
-      for (int k = 0; k < kLanes; ++k) y.x[b * kLanes + k] = sum[k];
-    }
-  }
-
-  // Normalises x and returns its norm; when x has numerically vanished (the
-  // Krylov space is invariant), replaces it with the unit vector least
-  // represented in the basis, orthogonalised, and returns 0.
-  [[gnu::always_inline]] double normalise(Vector& x, const Vector* basis, int count) const {
-    const double norm = std::sqrt(dot(x, x));
-    if (norm > 1e-9 * scale) {
-      scale_by(x, 1.0 / norm);
-      return norm;
-    }
-    int best = 0;
-    double best_residual = -1.0;
-    for (int j = 0; j < n; ++j) {
-      double residual = 1.0;
-      for (int k = 0; k < count; ++k) residual -= basis[k].x[j] * basis[k].x[j];
-      if (residual > best_residual) {
-        best_residual = residual;
-        best = j;
-      }
-    }
-    x = Vector{};
-    x.x[best] = 1.0;
-    orthogonalise(x, basis, count);
-    scale_by(x, 1.0 / std::sqrt(dot(x, x)));
-    return 0.0;
-  }
-
-  // Classical Gram-Schmidt against the first `count` basis vectors: once is
-  // enough in double for these few steps (the Ritz values agree with a full
-  // SVD to 1e-6 sigma1 either way).
-  [[gnu::always_inline]] static void orthogonalise(Vector& x, const Vector* basis, int count) {
-    double coefficients[kMaxSteps + 1];
-    for (int k = 0; k < count; ++k) coefficients[k] = dot(basis[k], x);
-    for (int k = 0; k < count; ++k) add_scaled(x, -coefficients[k], basis[k]);
-  }
-
-  int count = 0, steps = 0;
-  double alpha[kMaxSteps] = {}, beta[kMaxSteps] = {};
-
-  // Loads the patch and the start vector; returns false for a zero patch.
-  [[gnu::always_inline]] bool start(const PatchView& patch, int wanted) {
-    const int size = patch.size();  // a local: the stores into a[] could alias a member
-    n = size;
-    count = wanted;
-    // One accumulator per lane block: a single one would chain all 3 x 21
-    // multiply-adds one after the other.
-    FloatLanes squares[kBlocks] = {};
-    FloatLanes column_sums[kBlocks] = {};  // the start vector
-    for (int i = 0; i < size; ++i) {
-      const float* row = patch.row(i);
-      for (int b = 0; b < kBlocks; ++b) {
-        FloatLanes lanes;
-        load_lanes(lanes, row + b * kLanes);
-        if (b == kBlocks - 1) keep_below(lanes, b * kLanes, size);  // earlier blocks are inside the patch
-        store_lanes(a[i].x + b * kLanes, lanes);
-        squares[b] += lanes * lanes;
-        column_sums[b] += lanes;
-      }
-    }
-    for (int i = size; i < kRowGroups * kLanes; ++i) a[i] = Row{};
-    for (int b = 1; b < kBlocks; ++b) squares[0] += squares[b];
-    scale = lane_sum(squares[0]);
-    steps = scale > 0.0 ? std::min(n, kStepsPerValue * count) : 0;
-    if (steps == 0) return false;  // a zero patch
-    v[0] = Vector{};
-    for (int b = 0; b < kBlocks; ++b)
-      for (int k = 0; k < kLanes; ++k) v[0].x[b * kLanes + k] = column_sums[b][k];
-    normalise(v[0], v, 0);
-    return true;
-  }
-
-  // Step m of T = V^T G V, tridiagonal with diagonal alpha and off-diagonal
-  // beta; its eigenvalues approximate those of G, the squared singular values.
-  [[gnu::always_inline]] void step(int m) {
-    Vector& w = v[m + 1];
-    multiply(v[m], w);
-    alpha[m] = dot(v[m], w);
-    if (m + 1 == steps) return;  // the last beta couples to a step not taken
-    orthogonalise(w, v, m + 1);
-    beta[m] = normalise(w, v, m + 1);
-  }
-
-  // The `count` largest singular values, descending, into out.
-  [[gnu::always_inline]] void finish(double* out) {
-    std::fill(out, out + count, 0.0);
-    if (steps == 0) return;
-    double off_diagonal[kMaxSteps];
-    for (int i = 0; i < steps; ++i) off_diagonal[i] = i + 1 < steps ? beta[i] : 0.0;
-    const int found = std::min(count, steps);
-    double top[3];
-    if (steps > 3 && top_tridiagonal_eigenvalues(alpha, off_diagonal, steps, found, top)) {
-      for (int k = 0; k < found; ++k) out[k] = std::sqrt(std::max(top[k], 0.0));
-      return;
-    }
-    if (steps == 3) symmetric_3x3_eigenvalues(alpha, off_diagonal);
-    else tridiagonal_eigenvalues(alpha, off_diagonal, steps);
-    for (int k = 0; k < found; ++k) {  // selection of the largest few (m <= 9)
-      int largest = k;
-      for (int i = k + 1; i < steps; ++i)
-        if (alpha[i] > alpha[largest]) largest = i;
-      std::swap(alpha[k], alpha[largest]);
-      out[k] = std::sqrt(std::max(alpha[k], 0.0));
-    }
-  }
-};
-
-}  // namespace
-
-// Up to three patches stepped in lockstep (see GramLanczos).
-template <int W>
-[[gnu::always_inline]] inline void run_lockstep(const PatchView* patches, const int* counts, int channels,
-                                                double (*out)[3], int* steps) {
-  GramLanczos<W> lanczos[3];  // default-initialised: start() writes what the rest reads
-  int most = 0;
-  for (int c = 0; c < channels; ++c) {
-    lanczos[c].start(patches[c], counts[c]);
-    most = std::max(most, lanczos[c].steps);
-  }
-  for (int m = 0; m < most; ++m)
-    for (int c = 0; c < channels; ++c)
-      if (m < lanczos[c].steps) lanczos[c].step(m);
-  for (int c = 0; c < channels; ++c) {
-    lanczos[c].finish(out[c]);
-    if (steps) steps[c] = lanczos[c].steps;
+  if (steps == 3) symmetric_3x3_eigenvalues(d, e);
+  else tridiagonal_eigenvalues(d, e, steps);
+  for (int k = 0; k < found; ++k) {  // selection of the largest few (m <= 9)
+    int largest = k;
+    for (int i = k + 1; i < steps; ++i)
+      if (d[i] > d[largest]) largest = i;
+    std::swap(d[k], d[largest]);
+    out[k] = std::sqrt(std::max(d[k], 0.0));
   }
 }
 
+// The 8 x 8 block rows[0..7] transposed in place: rows[k] becomes column k
+// (three rounds of two-source shuffles: unpack, 64-bit pairs, 128-bit halves).
+[[gnu::always_inline]] inline void transpose_lanes(FloatLanes* rows) {
+  FloatLanes t[kLanes], s[kLanes];
+  for (int k = 0; k < 4; ++k) {
+    t[2 * k] = __builtin_shufflevector(rows[2 * k], rows[2 * k + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+    t[2 * k + 1] = __builtin_shufflevector(rows[2 * k], rows[2 * k + 1], 2, 10, 3, 11, 6, 14, 7, 15);
+  }
+  for (int h = 0; h < 2; ++h) {  // rows 0-3, then 4-7
+    const FloatLanes* u = t + 4 * h;
+    FloatLanes* o = s + 4 * h;
+    o[0] = __builtin_shufflevector(u[0], u[2], 0, 1, 8, 9, 4, 5, 12, 13);
+    o[1] = __builtin_shufflevector(u[0], u[2], 2, 3, 10, 11, 6, 7, 14, 15);
+    o[2] = __builtin_shufflevector(u[1], u[3], 0, 1, 8, 9, 4, 5, 12, 13);
+    o[3] = __builtin_shufflevector(u[1], u[3], 2, 3, 10, 11, 6, 7, 14, 15);
+  }
+  for (int k = 0; k < 4; ++k) {
+    rows[k] = __builtin_shufflevector(s[k], s[k + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    rows[k + 4] = __builtin_shufflevector(s[k], s[k + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+}
+
+// Square roots of the lanes (a handful per step: not worth a vector
+// intrinsic, and std::sqrt keeps the baseline build portable). Vectors are
+// passed by reference: by value their ABI would depend on the target.
+[[gnu::always_inline]] inline void sqrt_lanes(const FloatLanes& x, FloatLanes& out) {
+  for (int l = 0; l < kLanes; ++l) out[l] = std::sqrt(x[l]);
+}
+
+// Golub-Kahan-Lanczos bidiagonalisation A V = U B of up to kLanes patches at
+// once, one patch per vector lane: every operation is lane by lane, so no
+// lane's result depends on the others (no horizontal reductions, and a
+// lane's arithmetic is the same whatever the other lanes hold). k steps
+// from the start vector v_0 give the upper bidiagonal B (diagonal alpha,
+// superdiagonal beta) with B^T B = the tridiagonal of k Lanczos steps on
+// G = A^T A from v_0, so the Ritz values are those of a Lanczos iteration on
+// G, at the same cost (one product with A and one with A^T a step). Working
+// on A rather than on G keeps float rounding at ~1e-7 sigma1 on every
+// singular value, where products with G would leave ~1e-7 sigma1^2 on the
+// squares, i.e. ~3e-4 sigma1 on a small one. Each new vector is the
+// three-term recurrence (which removes the large components) followed by
+// one Gram-Schmidt pass against all earlier vectors of its side (which
+// removes what rounding left); a vanished vector is replaced by a fresh unit
+// vector and its coefficient set to 0 (the bidiagonal splits).
+template <int N>
+struct LaneBidiagonalisation {
+  static constexpr int kBlocks = lane_width(N) / kLanes;
+
+  FloatLanes a[N][N];          // a[i][j] = row i, column j of each lane's patch
+  FloatLanes v[kMaxSteps][N];  // right vectors (columns of V)
+  FloatLanes u[kMaxSteps][N];  // left vectors (columns of U)
+  FloatLanes norm;             // Frobenius norm of the patch, per lane
+  // Below this a vector has vanished: coefficients are at most
+  // sigma1 <= |A|_F, and what rounding leaves of a vanished vector is ~1e-7
+  // of that.
+  FloatLanes floor;
+  FloatLanes alpha[kMaxSteps], beta[kMaxSteps];
+  IntLanes live;  // lanes holding a patch with a non-zero entry (all bits set)
+  int steps = 0;
+
+  // out = sum_j x[j] y[j], lane by lane
+  [[gnu::always_inline]] static void dot(const FloatLanes* x, const FloatLanes* y, FloatLanes& out) {
+    FloatLanes even = x[0] * y[0], odd = {};  // two chains: N is odd
+    for (int j = 1; j < N; j += 2) {
+      even += x[j] * y[j];
+      odd += x[j + 1] * y[j + 1];
+    }
+    out = even + odd;
+  }
+
+  // out = sum_j x[j], lane by lane
+  [[gnu::always_inline]] static void sum(const FloatLanes* x, FloatLanes& out) {
+    FloatLanes even = x[0], odd = {};
+    for (int j = 1; j < N; j += 2) {
+      even += x[j];
+      odd += x[j + 1];
+    }
+    out = even + odd;
+  }
+
+  // The patches, transposed to one lane each (lanes past `lanes` are zero),
+  // with their column sums in v[0] and the squared norms of their columns in
+  // u[0] (one accumulator per column: a single one would chain all N^2
+  // additions one after the other).
+  [[gnu::always_inline]] void load(const PatchView* patches, int lanes) {
+    for (int j = 0; j < N; ++j) v[0][j] = u[0][j] = FloatLanes{};
+    for (int i = 0; i < N; ++i)
+      for (int b = 0; b < kBlocks; ++b) {
+        FloatLanes rows[kLanes];
+        for (int l = 0; l < kLanes; ++l) {
+          if (l < lanes) load_lanes(rows[l], patches[l].row(i) + b * kLanes);  // PatchView::kReadSlack
+          else rows[l] = FloatLanes{};
+        }
+        transpose_lanes(rows);
+        for (int k = 0; k < kLanes && b * kLanes + k < N; ++k) {
+          const int j = b * kLanes + k;
+          a[i][j] = rows[k];
+          v[0][j] += rows[k];
+          u[0][j] += rows[k] * rows[k];
+        }
+      }
+  }
+
+  // x -= (basis_k . x) basis_k for k < count, one modified Gram-Schmidt pass.
+  [[gnu::always_inline]] static void orthogonalise(FloatLanes* x, const FloatLanes (*basis)[N], int count) {
+    for (int k = 0; k < count; ++k) {
+      FloatLanes c;
+      dot(basis[k], x, c);
+      for (int j = 0; j < N; ++j) x[j] -= c * basis[k][j];
+    }
+  }
+
+  // Lane l of basis[m]: the unit vector least represented in basis[0..m),
+  // orthogonalised (twice) and normalised. Only where a lane's Krylov space
+  // became invariant (the identity, a rank-deficient patch), which is rare
+  // on real patches, so it is plain scalar code.
+  static void restart_lane(FloatLanes (*basis)[N], int l, int m) {
+    int best = 0;
+    float best_residual = -1.0f;
+    for (int j = 0; j < N; ++j) {
+      float residual = 1.0f;
+      for (int k = 0; k < m; ++k) residual -= basis[k][j][l] * basis[k][j][l];
+      if (residual > best_residual) best_residual = residual, best = j;
+    }
+    float x[N] = {};
+    x[best] = 1.0f;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int k = 0; k < m; ++k) {
+        float c = 0.0f;
+        for (int j = 0; j < N; ++j) c += basis[k][j][l] * x[j];
+        for (int j = 0; j < N; ++j) x[j] -= c * basis[k][j][l];
+      }
+    float length = 0.0f;
+    for (int j = 0; j < N; ++j) length += x[j] * x[j];
+    length = std::sqrt(length);
+    for (int j = 0; j < N; ++j) basis[m][j][l] = x[j] / length;
+  }
+
+  // Normalises basis[m]; `coefficient` gets its norm. A live lane whose norm
+  // is at most `floor` has vanished: coefficient 0 and a fresh unit vector.
+  [[gnu::always_inline]] void normalise(FloatLanes (*basis)[N], int m, const FloatLanes& floor,
+                                        FloatLanes& coefficient) const {
+    FloatLanes* x = basis[m];
+    FloatLanes squares;
+    dot(x, x, squares);
+    sqrt_lanes(squares, coefficient);
+    const IntLanes kept = coefficient > floor;
+    const FloatLanes zero = {};
+    const FloatLanes inverse = kept ? 1.0f / coefficient : zero;
+    for (int j = 0; j < N; ++j) x[j] *= inverse;
+    coefficient = kept ? coefficient : zero;
+    const IntLanes vanished = live & ~kept;
+    for (int l = 0; l < kLanes; ++l)
+      if (vanished[l]) restart_lane(basis, l, m);
+  }
+
+  // The products with A and A^T take eight rows (columns) at a time: one
+  // load of x serves eight multiply-adds into eight independent
+  // accumulators (enough to keep both FMA units busy), in named variables
+  // because GCC keeps an accumulator array in memory. The rows left over
+  // go one at a time.
+
+  // y[i] = sum_j a[i][j] x[j]
+  [[gnu::always_inline]] void times(const FloatLanes* x, FloatLanes* y) const {
+    int i = 0;
+    for (; i + 8 <= N; i += 8) {
+      const FloatLanes(*r)[N] = a + i;
+      FloatLanes s0 = {}, s1 = {}, s2 = {}, s3 = {}, s4 = {}, s5 = {}, s6 = {}, s7 = {};
+      for (int j = 0; j < N; ++j) {
+        const FloatLanes xj = x[j];
+        s0 += r[0][j] * xj, s1 += r[1][j] * xj, s2 += r[2][j] * xj, s3 += r[3][j] * xj;
+        s4 += r[4][j] * xj, s5 += r[5][j] * xj, s6 += r[6][j] * xj, s7 += r[7][j] * xj;
+      }
+      y[i] = s0, y[i + 1] = s1, y[i + 2] = s2, y[i + 3] = s3;
+      y[i + 4] = s4, y[i + 5] = s5, y[i + 6] = s6, y[i + 7] = s7;
+    }
+    for (; i < N; ++i) dot(a[i], x, y[i]);
+  }
+
+  // y[j] = sum_i a[i][j] x[i]
+  [[gnu::always_inline]] void transposed_times(const FloatLanes* x, FloatLanes* y) const {
+    int j = 0;
+    for (; j + 8 <= N; j += 8) {
+      FloatLanes s0 = {}, s1 = {}, s2 = {}, s3 = {}, s4 = {}, s5 = {}, s6 = {}, s7 = {};
+      for (int i = 0; i < N; ++i) {
+        const FloatLanes xi = x[i];
+        const FloatLanes* c = a[i] + j;
+        s0 += c[0] * xi, s1 += c[1] * xi, s2 += c[2] * xi, s3 += c[3] * xi;
+        s4 += c[4] * xi, s5 += c[5] * xi, s6 += c[6] * xi, s7 += c[7] * xi;
+      }
+      y[j] = s0, y[j + 1] = s1, y[j + 2] = s2, y[j + 3] = s3;
+      y[j + 4] = s4, y[j + 5] = s5, y[j + 6] = s6, y[j + 7] = s7;
+    }
+    for (; j < N; ++j) {
+      FloatLanes even = a[0][j] * x[0], odd = {};
+      for (int i = 1; i < N; i += 2) {
+        even += a[i][j] * x[i];
+        odd += a[i + 1][j] * x[i + 1];
+      }
+      y[j] = even + odd;
+    }
+  }
+
+  // u[m] = A v[m] - beta[m-1] u[m-1], orthogonalised against u[0..m).
+  [[gnu::always_inline]] void left(int m) {
+    FloatLanes* p = u[m];
+    times(v[m], p);
+    if (m > 0) {
+      for (int i = 0; i < N; ++i) p[i] -= beta[m - 1] * u[m - 1][i];
+      orthogonalise(p, u, m);
+    }
+    normalise(u, m, floor, alpha[m]);
+  }
+
+  // v[m+1] = A^T u[m] - alpha[m] v[m], orthogonalised against v[0..m].
+  [[gnu::always_inline]] void right(int m) {
+    FloatLanes* r = v[m + 1];
+    transposed_times(u[m], r);
+    for (int j = 0; j < N; ++j) r[j] -= alpha[m] * v[m][j];
+    orthogonalise(r, v, m + 1);
+    normalise(v, m + 1, floor, beta[m]);
+  }
+
+  // Start vector: the column sums, close to the leading right singular
+  // vector of a non-negative patch (whose column sums have a norm of at
+  // least |A|_F; they can only vanish on signed patches).
+  [[gnu::always_inline]] void run(int count) {
+    FloatLanes squares;
+    sum(u[0], squares);  // load() left the columns' squared norms in u[0]
+    sqrt_lanes(squares, norm);
+    floor = 1e-6f * norm;
+    const FloatLanes zero = {};
+    live = norm > zero;
+    steps = std::min(N, kStepsPerValue * count);
+    FloatLanes start_norm;
+    normalise(v, 0, floor, start_norm);
+    left(0);
+    for (int m = 0; m + 1 < steps; ++m) {
+      right(m);
+      left(m + 1);
+    }
+  }
+
+  // The `count` largest singular values of lane l, descending: square roots
+  // of the largest eigenvalues of B^T B (tridiagonal: diagonal
+  // alpha_i^2 + beta_(i-1)^2, off-diagonal alpha_i beta_i), formed in double.
+  void finish(int l, int count, double* out) const {
+    std::fill(out, out + count, 0.0);
+    if (!live[l]) return;
+    double d[kMaxSteps], e[kMaxSteps];
+    for (int i = 0; i < steps; ++i) {
+      const double diagonal = alpha[i][l], above = i > 0 ? static_cast<double>(beta[i - 1][l]) : 0.0;
+      d[i] = diagonal * diagonal + above * above;
+      e[i] = i + 1 < steps ? diagonal * static_cast<double>(beta[i][l]) : 0.0;
+    }
+    largest_singular_values(d, e, steps, count, out);
+  }
+};
+
+template <int N>
+[[gnu::always_inline]] inline void run_lanes(const PatchView* patches, int lanes, int count, double (*out)[3],
+                                             int* steps) {
+  LaneBidiagonalisation<N> bidiagonal;  // default-initialised: load() and run() write what finish() reads
+  bidiagonal.load(patches, lanes);
+  bidiagonal.run(count);
+  for (int l = 0; l < lanes; ++l) {
+    bidiagonal.finish(l, count, out[l]);
+    if (steps) steps[l] = bidiagonal.live[l] ? bidiagonal.steps : 0;
+  }
+}
+
+}  // namespace
+
 FACADESLAM_KERNEL
-void top_singular_values(const PatchView* patches, const int* counts, int channels, double (*out)[3], int* steps) {
-  CV_Assert(channels >= 1 && channels <= 3);
-  for (int c = 0; c < channels; ++c)
-    CV_Assert(counts[c] >= 1 && counts[c] <= 3 && patches[c].radius == patches[0].radius);
-  switch (lane_width(patches[0].size())) {
-    case 8: return run_lockstep<8>(patches, counts, channels, out, steps);
-    case 16: return run_lockstep<16>(patches, counts, channels, out, steps);
-    case 24: return run_lockstep<24>(patches, counts, channels, out, steps);
+void top_singular_values(const PatchView* patches, int lanes, int count, double (*out)[3], int* steps) {
+  CV_Assert(lanes >= 1 && lanes <= kSingularValueLanes && count >= 1 && count <= 3);
+  for (int l = 1; l < lanes; ++l) CV_Assert(patches[l].radius == patches[0].radius);
+  switch (patches[0].size()) {
+    case 3: return run_lanes<3>(patches, lanes, count, out, steps);
+    case 5: return run_lanes<5>(patches, lanes, count, out, steps);
+    case 7: return run_lanes<7>(patches, lanes, count, out, steps);
+    case 9: return run_lanes<9>(patches, lanes, count, out, steps);
+    case 11: return run_lanes<11>(patches, lanes, count, out, steps);
+    case 13: return run_lanes<13>(patches, lanes, count, out, steps);
+    case 15: return run_lanes<15>(patches, lanes, count, out, steps);
+    case 17: return run_lanes<17>(patches, lanes, count, out, steps);
+    case 19: return run_lanes<19>(patches, lanes, count, out, steps);
+    case 21: return run_lanes<21>(patches, lanes, count, out, steps);
     default: break;
   }
-  CV_Error(cv::Error::StsOutOfRange, "patch radius exceeds the kernels' 10 pixels");
+  CV_Error(cv::Error::StsOutOfRange, "patch radius must be 1..10 for the singular values");
 }
 
 int top_singular_values(const PatchView& patch, int count, double* out) {
   double values[1][3];
   int steps = 0;
-  top_singular_values(&patch, &count, 1, values, &steps);
+  top_singular_values(&patch, 1, count, values, &steps);
   std::copy(values[0], values[0] + count, out);
   return steps;
 }
 
-void singular_values_module(const ModuleContext& context, std::uint64_t bits, float* values) {
-  PatchView patches[3];
-  int counts[3], channel_of[3];
-  int channels = 0;
+namespace {
+
+// How many singular values of channel c the module bits want (the highest
+// active one decides: the iteration finds them from the top).
+int wanted_count(std::uint64_t bits, int c) {
+  const std::uint64_t wanted = (bits >> (3 * c)) & 0x7;
+  return wanted & 4 ? 3 : wanted & 2 ? 2 : wanted ? 1 : 0;
+}
+
+}  // namespace
+
+void singular_values_of_patches(const PreparedImage& image, const std::vector<cv::Point>& centres, int radius,
+                                std::uint64_t bits, float* values) {
   for (int c = 0; c < 3; ++c) {
-    const std::uint64_t wanted = (bits >> (3 * c)) & 0x7;
-    if (!wanted) continue;
-    patches[channels] = context.patch(colour_plane(c));
-    counts[channels] = wanted & 4 ? 3 : wanted & 2 ? 2 : 1;
-    channel_of[channels++] = c;
+    const int count = wanted_count(bits, c);
+    if (count == 0) continue;
+    for (std::size_t first = 0; first < centres.size(); first += kSingularValueLanes) {
+      const int lanes = static_cast<int>(std::min<std::size_t>(kSingularValueLanes, centres.size() - first));
+      PatchView patches[kSingularValueLanes];
+      for (int l = 0; l < lanes; ++l) {
+        const cv::Point& p = centres[first + static_cast<std::size_t>(l)];
+        patches[l] = image.patch(colour_plane(c), p.x, p.y, radius);
+      }
+      double sigma[kSingularValueLanes][3];
+      top_singular_values(patches, lanes, count, sigma);
+      for (int l = 0; l < lanes; ++l) {
+        float* row = values + (first + static_cast<std::size_t>(l)) * kSingularValueCount;
+        for (int k = 0; k < count; ++k)
+          if (bit_set(bits >> (3 * c), k)) row[3 * c + k] = static_cast<float>(sigma[l][k]);
+      }
+    }
   }
-  if (channels == 0) return;
-  double sigma[3][3];
-  top_singular_values(patches, counts, channels, sigma, nullptr);
-  for (int i = 0; i < channels; ++i) {
-    const int c = channel_of[i];
-    for (int k = 0; k < counts[i]; ++k)
-      if (bit_set(bits >> (3 * c), k)) values[3 * c + k] = static_cast<float>(sigma[i][k]);
+}
+
+void singular_values_module(const ModuleContext& context, std::uint64_t bits, float* values) {
+  if (context.singular_values) {  // computed in batches by the extractor
+    for (int i = 0; i < kSingularValueCount; ++i)
+      if (bit_set(bits, i)) values[i] = context.singular_values[i];
+    return;
+  }
+  for (int c = 0; c < 3; ++c) {
+    const int count = wanted_count(bits, c);
+    if (count == 0) continue;
+    double sigma[3];
+    top_singular_values(context.patch(colour_plane(c)), count, sigma);
+    for (int k = 0; k < count; ++k)
+      if (bit_set(bits >> (3 * c), k)) values[3 * c + k] = static_cast<float>(sigma[k]);
   }
 }
 
