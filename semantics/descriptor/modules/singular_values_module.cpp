@@ -171,6 +171,99 @@ void largest_singular_values(double* d, double* e, int steps, int count, double*
   }
 }
 
+// Four doubles' comparison masks (all bits set where true).
+using DoubleMask = long long __attribute__((vector_size(4 * sizeof(long long))));
+
+[[gnu::always_inline]] inline void abs_lanes(const DoubleLanes& x, DoubleLanes& out) {
+  const DoubleLanes zero = {};
+  out = x < zero ? -x : x;
+}
+
+[[gnu::always_inline]] inline bool any_lane(const DoubleMask& m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+
+// top_tridiagonal_eigenvalues on four tridiagonals at once, one per lane
+// (diagonal d, off-diagonal e[0..m-2] with e[m-1] = 0): the same Laguerre
+// steps lane by lane, each lane stopping when its step is below tolerance.
+// `settled` marks the lanes where every root settled; the others are left
+// to the scalar solver, as are its fallbacks (near-multiple roots, no
+// convergence).
+[[gnu::always_inline]] inline void top_tridiagonal_eigenvalues_4(const DoubleLanes* d, const DoubleLanes* e, int m,
+                                                                 int count, DoubleLanes* out, DoubleMask& settled) {
+  const DoubleLanes zero = {}, one = zero + 1.0;
+  DoubleLanes upper = zero, trace = zero;
+  for (int i = 0; i < m; ++i) {
+    DoubleLanes left = zero, right = zero;
+    if (i > 0) abs_lanes(e[i - 1], left);
+    if (i + 1 < m) abs_lanes(e[i], right);
+    const DoubleLanes bound = d[i] + left + right;
+    upper = bound > upper ? bound : upper;
+    trace += d[i];
+  }
+  DoubleMask good = upper > zero;
+  const DoubleLanes tolerance = 1e-14 * upper;
+  DoubleLanes found_sum = zero;
+  for (int k = 0; k < count; ++k) {
+    DoubleLanes x = upper;
+    if (k > 0) {
+      const DoubleLanes rest = trace - found_sum;
+      x = (rest < upper ? rest : upper) + tolerance;
+      good &= x < out[k - 1] - 1e-6 * upper;
+    }
+    const double n = m - k;
+    DoubleMask done = ~good;
+    for (int iteration = 0; iteration < 40 && any_lane(~done); ++iteration) {
+      DoubleLanes p0 = one, p1 = d[0] - x, dp0 = zero, dp1 = -one, ddp0 = zero, ddp1 = zero;
+      for (int i = 1; i < m; ++i) {
+        const DoubleLanes a = d[i] - x, b = e[i - 1] * e[i - 1];
+        const DoubleLanes p2 = a * p1 - b * p0;
+        const DoubleLanes dp2 = -p1 + a * dp1 - b * dp0;
+        const DoubleLanes ddp2 = -2.0 * dp1 + a * ddp1 - b * ddp0;
+        p0 = p1, p1 = p2, dp0 = dp1, dp1 = dp2, ddp0 = ddp1, ddp1 = ddp2;
+        DoubleLanes a1, a2, a3;
+        abs_lanes(p1, a1);
+        abs_lanes(dp1, a2);
+        abs_lanes(ddp1, a3);
+        DoubleLanes largest = a1 > a2 ? a1 : a2;
+        largest = a3 > largest ? a3 : largest;
+        const DoubleMask big = largest > 1e100;
+        if (any_lane(big)) {
+          const DoubleLanes inverse = big ? one / largest : one;
+          p0 *= inverse, p1 *= inverse, dp0 *= inverse, dp1 *= inverse, ddp0 *= inverse, ddp1 *= inverse;
+        }
+      }
+      const DoubleMask root = p1 == zero;  // x is a root
+      done |= root;
+      const DoubleLanes safe_p = root ? one : p1;
+      DoubleLanes g = dp1 / safe_p, h = g * g - ddp1 / safe_p;
+      for (int j = 0; j < k; ++j) {  // divide out the roots found
+        const DoubleLanes inverse = one / (x - out[j]);
+        g -= inverse;
+        h -= inverse * inverse;
+      }
+      DoubleLanes radicand = (n - 1.0) * (n * h - g * g);
+      radicand = radicand > zero ? radicand : zero;
+      DoubleLanes root_term = zero;
+      for (int t = 0; t < 4; ++t) root_term[t] = std::sqrt(radicand[t]);
+      const DoubleLanes denominator = g > zero ? g + root_term : g - root_term;
+      DoubleLanes size;
+      abs_lanes(denominator, size);
+      const DoubleMask moving = ~done;
+      good &= ~(moving & ~(size > zero));
+      const DoubleMask update = moving & good;
+      const DoubleLanes step = n / (update ? denominator : one);
+      x = update ? x - step : x;
+      DoubleLanes step_size;
+      abs_lanes(step, step_size);
+      done |= ~good | (update & (step_size <= tolerance));
+    }
+    const DoubleMask finite = (x == x) & (x < 1e300) & (x > -1e300);
+    good &= done & finite;
+    out[k] = x;
+    found_sum += x;
+  }
+  settled = good;
+}
+
 // The 8 x 8 block rows[0..7] transposed in place: rows[k] becomes column k
 // (three rounds of two-source shuffles: unpack, 64-bit pairs, 128-bit halves).
 [[gnu::always_inline]] inline void transpose_lanes(FloatLanes* rows) {
@@ -241,22 +334,8 @@ struct LaneBidiagonalisation {
     out = even + odd;
   }
 
-  // out = sum_j x[j], lane by lane
-  [[gnu::always_inline]] static void sum(const FloatLanes* x, FloatLanes& out) {
-    FloatLanes even = x[0], odd = {};
-    for (int j = 1; j < N; j += 2) {
-      even += x[j];
-      odd += x[j + 1];
-    }
-    out = even + odd;
-  }
-
-  // The patches, transposed to one lane each (lanes past `lanes` are zero),
-  // with their column sums in v[0] and the squared norms of their columns in
-  // u[0] (one accumulator per column: a single one would chain all N^2
-  // additions one after the other).
+  // The patches, transposed to one lane each; lanes past `lanes` are zero.
   [[gnu::always_inline]] void load(const PatchView* patches, int lanes) {
-    for (int j = 0; j < N; ++j) v[0][j] = u[0][j] = FloatLanes{};
     for (int i = 0; i < N; ++i)
       for (int b = 0; b < kBlocks; ++b) {
         FloatLanes rows[kLanes];
@@ -265,12 +344,7 @@ struct LaneBidiagonalisation {
           else rows[l] = FloatLanes{};
         }
         transpose_lanes(rows);
-        for (int k = 0; k < kLanes && b * kLanes + k < N; ++k) {
-          const int j = b * kLanes + k;
-          a[i][j] = rows[k];
-          v[0][j] += rows[k];
-          u[0][j] += rows[k] * rows[k];
-        }
+        for (int k = 0; k < kLanes && b * kLanes + k < N; ++k) a[i][b * kLanes + k] = rows[k];
       }
   }
 
@@ -398,8 +472,20 @@ struct LaneBidiagonalisation {
   // vector of a non-negative patch (whose column sums have a norm of at
   // least |A|_F; they can only vanish on signed patches).
   [[gnu::always_inline]] void run(int count) {
-    FloatLanes squares;
-    sum(u[0], squares);  // load() left the columns' squared norms in u[0]
+    FloatLanes ones[N];
+    for (int i = 0; i < N; ++i) ones[i] = FloatLanes{} + 1.0f;
+    transposed_times(ones, v[0]);
+    // |A|_F^2 in eight accumulators (one would chain all N^2 multiply-adds).
+    const FloatLanes* entry = a[0];
+    FloatLanes s0 = {}, s1 = {}, s2 = {}, s3 = {}, s4 = {}, s5 = {}, s6 = {}, s7 = {};
+    int k = 0;
+    for (; k + 8 <= N * N; k += 8) {
+      s0 += entry[k] * entry[k], s1 += entry[k + 1] * entry[k + 1], s2 += entry[k + 2] * entry[k + 2];
+      s3 += entry[k + 3] * entry[k + 3], s4 += entry[k + 4] * entry[k + 4], s5 += entry[k + 5] * entry[k + 5];
+      s6 += entry[k + 6] * entry[k + 6], s7 += entry[k + 7] * entry[k + 7];
+    }
+    for (; k < N * N; ++k) s0 += entry[k] * entry[k];
+    const FloatLanes squares = ((s0 + s1) + (s2 + s3)) + ((s4 + s5) + (s6 + s7));
     sqrt_lanes(squares, norm);
     floor = 1e-6f * norm;
     const FloatLanes zero = {};
@@ -414,19 +500,38 @@ struct LaneBidiagonalisation {
     }
   }
 
-  // The `count` largest singular values of lane l, descending: square roots
-  // of the largest eigenvalues of B^T B (tridiagonal: diagonal
-  // alpha_i^2 + beta_(i-1)^2, off-diagonal alpha_i beta_i), formed in double.
-  void finish(int l, int count, double* out) const {
-    std::fill(out, out + count, 0.0);
-    if (!live[l]) return;
-    double d[kMaxSteps], e[kMaxSteps];
-    for (int i = 0; i < steps; ++i) {
-      const double diagonal = alpha[i][l], above = i > 0 ? static_cast<double>(beta[i - 1][l]) : 0.0;
-      d[i] = diagonal * diagonal + above * above;
-      e[i] = i + 1 < steps ? diagonal * static_cast<double>(beta[i][l]) : 0.0;
+  // The `count` largest singular values of lanes 0..lanes-1, descending:
+  // square roots of the largest eigenvalues of B^T B (tridiagonal: diagonal
+  // alpha_i^2 + beta_(i-1)^2, off-diagonal alpha_i beta_i), formed in double
+  // and solved four lanes at a time; a lane the lane solver leaves unsettled
+  // goes through the scalar one.
+  [[gnu::always_inline]] void finish(int lanes, int count, double (*out)[3]) const {
+    const int found = std::min(count, steps);
+    for (int group = 0; 4 * group < lanes; ++group) {
+      DoubleLanes d[kMaxSteps], e[kMaxSteps];
+      for (int i = 0; i < steps; ++i)
+        for (int t = 0; t < 4; ++t) {
+          const int l = 4 * group + t;
+          const double diagonal = alpha[i][l], above = i > 0 ? static_cast<double>(beta[i - 1][l]) : 0.0;
+          d[i][t] = diagonal * diagonal + above * above;
+          e[i][t] = i + 1 < steps ? diagonal * static_cast<double>(beta[i][l]) : 0.0;
+        }
+      DoubleLanes top[3];
+      DoubleMask settled;
+      top_tridiagonal_eigenvalues_4(d, e, steps, found, top, settled);
+      for (int t = 0; t < 4 && 4 * group + t < lanes; ++t) {
+        const int l = 4 * group + t;
+        std::fill(out[l], out[l] + count, 0.0);
+        if (!live[l]) continue;
+        if (settled[t]) {
+          for (int k = 0; k < found; ++k) out[l][k] = std::sqrt(std::max(top[k][t], 0.0));
+          continue;
+        }
+        double dl[kMaxSteps], el[kMaxSteps];
+        for (int i = 0; i < steps; ++i) dl[i] = d[i][t], el[i] = e[i][t];
+        largest_singular_values(dl, el, steps, count, out[l]);
+      }
     }
-    largest_singular_values(d, e, steps, count, out);
   }
 };
 
@@ -436,10 +541,9 @@ template <int N>
   LaneBidiagonalisation<N> bidiagonal;  // default-initialised: load() and run() write what finish() reads
   bidiagonal.load(patches, lanes);
   bidiagonal.run(count);
-  for (int l = 0; l < lanes; ++l) {
-    bidiagonal.finish(l, count, out[l]);
-    if (steps) steps[l] = bidiagonal.live[l] ? bidiagonal.steps : 0;
-  }
+  bidiagonal.finish(lanes, count, out);
+  if (steps)
+    for (int l = 0; l < lanes; ++l) steps[l] = bidiagonal.live[l] ? bidiagonal.steps : 0;
 }
 
 }  // namespace
