@@ -19,8 +19,13 @@
 //  - BM_SiftPatchDiameter: the same with KeyPoint::size = 2r+1 (OpenCV's
 //    "diameter of the meaningful neighbourhood"), for reference only: SIFT
 //    then describes a ~6x wider region, and its cost grows with its area.
+//  - BM_OpponentSift / BM_Edd: the thesis' own speed claim (V.3: EDD "26
+//    times faster than the Opponent SIFT" over a whole image's keypoints),
+//    both through the label evaluation's PointDescriptor (per-image
+//    preparation included); BM_Edd reports opponent_sift_over_edd and
+//    sift_over_edd.
 // BM_ThesisGenome reports sift_over_thesis = SIFT time / thesis-genome time
-// (the thesis' claim is speed: goal >= 10, ideally 20). Everything runs on
+// (issue 5 asks >= 10, ideally 20; the thesis gives no time for the genome). Everything runs on
 // one OpenCV thread so the ratio compares work, not core counts, and the
 // counters use the thread's CPU time, which a busy machine disturbs less
 // than wall time. prepare() reuses one PreparedImage, as a frame or
@@ -37,6 +42,7 @@
 #include "bench/bench_images.hpp"
 #include "semantics/descriptor/extraction.hpp"
 #include "semantics/descriptor/genome.hpp"
+#include "semantics/point_descriptors/point_descriptor.hpp"
 
 namespace {
 
@@ -203,6 +209,34 @@ BENCHMARK(BM_SiftPatchDiameter)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_SiftSparse(benchmark::State& state) { g_sift_sparse_seconds = run_sift(state, sparse_keypoints(), sift_size()); }
 BENCHMARK(BM_SiftSparse)->Unit(benchmark::kMillisecond);
+
+// PointDescriptor `name` (evaluate labels' harness) on the grid keypoints;
+// returns the CPU seconds per image.
+double run_point_descriptor(benchmark::State& state, std::string_view name) {
+  const auto descriptor = make_point_descriptor(name, Genome::thesis_best());
+  cv::Mat d;
+  const double start = thread_seconds();
+  for (auto _ : state) {
+    d = descriptor->compute(frame(), grid_keypoints());
+    benchmark::DoNotOptimize(d.data);
+  }
+  const double seconds = thread_seconds() - start;
+  per_keypoint(state, seconds, grid_keypoints().size());
+  state.counters["values"] = d.cols;
+  return seconds / static_cast<double>(state.iterations());
+}
+
+double g_opponent_sift_seconds = 0.0;
+
+void BM_OpponentSift(benchmark::State& state) { g_opponent_sift_seconds = run_point_descriptor(state, "opponent-sift"); }
+BENCHMARK(BM_OpponentSift)->Unit(benchmark::kMillisecond);
+
+void BM_Edd(benchmark::State& state) {
+  const double per_image = run_point_descriptor(state, "edd");
+  if (g_opponent_sift_seconds > 0) state.counters["opponent_sift_over_edd"] = g_opponent_sift_seconds / per_image;
+  if (g_sift_seconds > 0) state.counters["sift_over_edd"] = g_sift_seconds / per_image;
+}
+BENCHMARK(BM_Edd)->Unit(benchmark::kMillisecond);
 
 void BM_ThesisGenome(benchmark::State& state) {
   const double per_image = run_genome(state, Genome::thesis_best().decode(), grid_keypoints());
