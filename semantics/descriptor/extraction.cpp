@@ -48,11 +48,9 @@ void check_keypoint(const cv::Point2f& kp, std::size_t index, cv::Size size) {
 }
 
 // Modules whose values are means and sigmas of planes (the strip shares
-// their column sums), and modules that read whole patches.
+// their column sums).
 constexpr Module kStatisticsModules[] = {Module::mean_std, Module::gevers_l, Module::gevers_c, Module::geusebroek,
                                          Module::edge_distance};
-constexpr Module kPatchModules[] = {Module::moments2, Module::moments3, Module::moments4, Module::moments5,
-                                    Module::hu, Module::affine_invariants, Module::singular_values};
 
 template <std::size_t N>
 ActivationMask restricted_to(const ActivationMask& activation, const Module (&modules)[N]) {
@@ -132,20 +130,15 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
     const cv::Point2f& kp = keypoints[static_cast<std::size_t>(k)];
     centres[static_cast<std::size_t>(k)] = {cvRound(kp.x), cvRound(kp.y)};
   }
-  // Keypoints go through row by row: the mean/sigma and gradient-region
-  // modules add up column sums shared by the row's keypoints
+  // Keypoints go through row by row: the mean/sigma, gradient-region and
+  // moment modules add up column sums shared by the row's keypoints
   // (strip_sums.hpp); rows of the result keep the input order.
   const std::vector<int> order = row_major_order(centres);
   StripSums strip;
   const PlaneSet statistics = required_planes(restricted_to(params.activation, kStatisticsModules));
   const PlaneSet regions = angle_planes(required_planes(params.activation));
-  const bool use_strip = (statistics | regions).any();
-  if (use_strip) strip.configure(image, r, statistics, regions);
-  // The planes read patch by patch, for prefetching the next keypoint's.
-  std::vector<const cv::Mat*> patch_planes;
-  const PlaneSet per_patch = required_planes(restricted_to(params.activation, kPatchModules));
-  for (int p = 0; p < kPlaneCount; ++p)
-    if (per_patch.test(static_cast<std::size_t>(p))) patch_planes.push_back(&image.planes[static_cast<std::size_t>(p)]);
+  strip.configure(image, r, statistics, regions, plan.moment_order);
+  const bool use_strip = strip.any();
 
   // Singular values go in batches of vector lanes over the keypoints in
   // processing order (a lane's values do not depend on its batch).
@@ -168,17 +161,6 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
       row_centres.push_back(centres[static_cast<std::size_t>(order[end])].x);
     if (use_strip) strip.compute(y, row_centres);
     for (std::size_t k = at; k < end; ++k) {
-      if (k + 1 < order.size()) {
-        // Neighbouring keypoints (a grid, or corners along an edge) share
-        // most of their patch rows, so the next patch's right edge is what
-        // is not in cache yet: one prefetch per row and plane, while this
-        // keypoint computes.
-        const cv::Point next = centres[static_cast<std::size_t>(order[k + 1])];
-        const int right = next.x + image.border + r;
-        const int top = next.y + image.border - r;
-        for (const cv::Mat* plane : patch_planes)
-          for (int i = 0; i <= 2 * r; ++i) __builtin_prefetch(plane->ptr<float>(top + i) + right);
-      }
       const int index = order[k];
       const cv::Point centre = centres[static_cast<std::size_t>(index)];
       const ModuleContext context{image,
@@ -192,7 +174,7 @@ cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keyp
       for (int c = 0; c < 3; ++c) {
         const int moment_order = plan.moment_order[static_cast<std::size_t>(c)];
         if (moment_order < 0) continue;
-        compute_patch_moments(context.patch(colour_plane(c)), moment_order, moments[static_cast<std::size_t>(c)]);
+        strip.moments(c, centre.x, moments[static_cast<std::size_t>(c)]);
         ++counts.moment_calls[static_cast<std::size_t>(c)];
       }
       for (const Module m : plan.modules) {

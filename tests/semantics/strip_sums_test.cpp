@@ -1,12 +1,13 @@
 // StripSums: the column sums a row's keypoints share must give the patch
-// definitions (patch_mean_std, gradient_region_means) and must not depend on
-// which other keypoints share the row.
+// definitions (patch_mean_std, gradient_region_means, compute_patch_moments)
+// and must not depend on which other keypoints share the row.
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "semantics/descriptor/modules/gradient_angles_module.hpp"
 #include "semantics/descriptor/modules/mean_std.hpp"
+#include "semantics/descriptor/modules/patch_moments.hpp"
 #include "semantics/descriptor/modules/strip_sums.hpp"
 #include "tests/semantics/semantics_test_util.hpp"
 
@@ -72,6 +73,42 @@ TEST(StripSums, ValuesDoNotDependOnTheOtherKeypointsOfTheRow) {
   const MeanStd shared = strip.mean_std(PlaneId::gevers_c2, 25);
   EXPECT_EQ(alone.mean, shared.mean);
   EXPECT_EQ(alone.std, shared.std);
+}
+
+void expect_same_moments(const PatchMoments& got, const PatchMoments& expected, int order, int x) {
+  EXPECT_EQ(got.order, expected.order);
+  for (int p = 0; p <= order; ++p)
+    for (int q = 0; p + q <= order; ++q) EXPECT_EQ(got.mu[p][q], expected.mu[p][q]) << "mu" << p << q << " at x=" << x;
+  for (int k = 0; k <= kMaxMomentOrder; ++k) EXPECT_EQ(got.eta_scale[k], expected.eta_scale[k]) << k;
+  for (int k = 0; k < 15; ++k) EXPECT_EQ(got.mass_powers[k], expected.mass_powers[k]) << k;
+}
+
+TEST(StripSums, MomentsAreThePatchMomentsBitForBit) {
+  // Every order and two radii, at the image edges (reflected border) and
+  // inside, on a row shared by many keypoints and by one alone.
+  for (const int r : {3, 10}) {
+    const PreparedImage image = test_util::image_with_plane(PlaneId::colour1, test_plane(), r);
+    for (int order = 0; order <= kMaxMomentOrder; ++order) {
+      StripSums strip;
+      strip.configure(image, r, {}, {}, {-1, order, -1});
+      ASSERT_TRUE(strip.has_moments(1) && !strip.has_moments(0));
+      const std::vector<int> centres{0, 1, 8, 9, 30, 55, 56};
+      for (const int y : {0, 19, 39}) {
+        strip.compute(y, centres);
+        for (const int x : centres) {
+          PatchMoments got, expected;
+          strip.moments(1, x, got);
+          compute_patch_moments(image.patch(PlaneId::colour1, x, y, r), order, expected);
+          expect_same_moments(got, expected, order, x);
+        }
+        PatchMoments shared, alone;
+        strip.moments(1, 30, shared);
+        strip.compute(y, {30});
+        strip.moments(1, 30, alone);
+        expect_same_moments(alone, shared, order, 30);
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 // from the patch centre; central mu_pq about the intensity centroid; and the
 // normalised eta_pq = mu_pq / mu00^(1 + (p+q)/2). Shared by the central
 // moment, Hu and affine-invariant modules, computed once per channel.
+#include <cstddef>
+
 #include "semantics/descriptor/modules/patch_view.hpp"
 
 namespace facadeslam::semantics {
@@ -26,5 +28,18 @@ struct PatchMoments {
 // held. A patch whose total intensity is not positive (e.g. all black) has
 // all moments 0. Reads rows with the slack of PatchView::kReadSlack.
 void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out);
+
+// The same in two halves, for patches that share a centre row (StripSums):
+//  - moment_column_sums: columns[q][x] = sum over rows dy = -r..r of
+//    dy^q I(x, row + dy), q = 0..order, for the `count` columns from
+//    `centre` (a pointer into the centre row, rows `stride` floats apart),
+//    in whole blocks of kLanes: it reads and writes up to kLanes - 1 columns
+//    past `count` (PatchView::kReadSlack; the column arrays must be as wide);
+//  - patch_moments_from_columns: the moments of the patch whose first column
+//    columns[q] points at.
+// Bit-identical to compute_patch_moments of the same patch.
+void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count,
+                        float* const* columns);
+void patch_moments_from_columns(const float* const* columns, int r, int order, PatchMoments& out);
 
 }  // namespace facadeslam::semantics

@@ -137,14 +137,26 @@ FACADESLAM_KERNEL MeanStd window_mean_std(const double* total, const double* tot
 
 }  // namespace
 
-void StripSums::configure(const PreparedImage& image, int radius, PlaneSet statistics, PlaneSet regions) {
+void StripSums::configure(const PreparedImage& image, int radius, PlaneSet statistics, PlaneSet regions,
+                          const std::array<int, 3>& moment_order) {
   CV_Assert(radius >= 1 && radius <= image.border && (statistics & regions).none() &&
             (image.computed & (statistics | regions)) == (statistics | regions));
   image_ = &image;
   radius_ = radius;
   statistics_ = statistics;
   regions_ = regions;
+  moment_order_ = moment_order;
   row_ = -1;
+  for (int c = 0; c < 3; ++c) {
+    const int order = moment_order[static_cast<std::size_t>(c)];
+    if (order < 0) continue;
+    CV_Assert(order <= kMaxMomentOrder && image.has(colour_plane(c)));
+    const auto bit = plane_bit(colour_plane(c));
+    // As wide as the plane plus the read slack: moment_column_sums writes
+    // whole blocks, up to kLanes - 1 columns past a span.
+    const auto width = static_cast<std::size_t>(image.planes[bit].cols + PatchView::kReadSlack);
+    for (int q = 0; q <= order; ++q) columns_[bit].moment[static_cast<std::size_t>(q)].resize(width);
+  }
   for (int p = 0; p < kPlaneCount; ++p) {
     const auto bit = static_cast<std::size_t>(p);
     if (!statistics.test(bit) && !regions.test(bit)) continue;
@@ -179,6 +191,13 @@ void StripSums::compute_regions(const cv::Mat& plane, int first, int last, Colum
             c.bottom.data() + first);
 }
 
+void StripSums::compute_moments(const cv::Mat& plane, int order, int first, int last, Columns& c) const {
+  const float* centre = plane.ptr<float>(row_ + image_->border) + first;
+  float* columns[kMaxMomentOrder + 1];
+  for (int q = 0; q <= order; ++q) columns[q] = c.moment[static_cast<std::size_t>(q)].data() + first;
+  moment_column_sums(centre, static_cast<std::ptrdiff_t>(plane.step1()), radius_, order, last - first, columns);
+}
+
 void StripSums::compute(int row, const std::vector<int>& centres) {
   CV_Assert(image_ && row >= 0 && row < image_->image_size.height);
   row_ = row;
@@ -196,6 +215,22 @@ void StripSums::compute(int row, const std::vector<int>& centres) {
       else if (regions_.test(bit)) compute_regions(plane, first, last, columns_[bit]);
     }
   }
+  for (int c = 0; c < 3; ++c) {
+    const int order = moment_order_[static_cast<std::size_t>(c)];
+    if (order < 0) continue;
+    const auto bit = plane_bit(colour_plane(c));
+    for (const auto& [first, last] : spans_) compute_moments(image_->planes[bit], order, first, last, columns_[bit]);
+  }
+}
+
+void StripSums::moments(int channel, int x, PatchMoments& out) const {
+  const int order = moment_order_[static_cast<std::size_t>(channel)];
+  CV_Assert(order >= 0);
+  const Columns& c = columns_[plane_bit(colour_plane(channel))];
+  const auto first = static_cast<std::size_t>(x + image_->border - radius_);
+  const float* columns[kMaxMomentOrder + 1];
+  for (int q = 0; q <= order; ++q) columns[q] = c.moment[static_cast<std::size_t>(q)].data() + first;
+  patch_moments_from_columns(columns, radius_, order, out);
 }
 
 MeanStd StripSums::mean_std(PlaneId p, int x) const {
