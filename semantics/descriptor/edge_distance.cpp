@@ -1,5 +1,6 @@
 #include "semantics/descriptor/edge_distance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -39,8 +40,11 @@ FACADESLAM_KERNEL void column_distances(const cv::Mat& edges, cv::Mat& g) {
 // found (no farther column can be closer), branch-free across the lanes:
 // dense Canny edges keep k small, and the cost follows the distances. Same
 // result as a lower envelope of parabolas (Felzenszwalb & Huttenlocher)
-// without its data-dependent branches. `squares` holds g^2 with `width`
-// columns of kFar^2 on both sides.
+// without its data-dependent branches. The stop test (a maximum across the
+// lanes, a serial chain) runs every kStepsPerTest steps: a step past the
+// bound cannot change a lane (its candidates are >= k^2 >= the lane's best),
+// so the result is the same. `squares` holds g^2 with `width` columns of
+// kFar^2 on both sides.
 FACADESLAM_KERNEL void row_distances(const float* g, int width, float* out, std::vector<float>& squares) {
   squares.assign(static_cast<std::size_t>(3 * width + kLanes), kFar * kFar);
   float* sq = squares.data() + width;
@@ -48,16 +52,19 @@ FACADESLAM_KERNEL void row_distances(const float* g, int width, float* out, std:
   for (int x = 0; x < width; x += kLanes) {
     FloatLanes best;
     load_lanes(best, sq + x);
-    for (int k = 1; k <= width; ++k) {
-      const float reach = static_cast<float>(k) * static_cast<float>(k);
+    constexpr int kStepsPerTest = 4;
+    for (int k = 1; k <= width;) {
       float worst = best[0];
       for (int lane = 1; lane < kLanes; ++lane) worst = best[lane] > worst ? best[lane] : worst;
-      if (reach >= worst) break;
-      FloatLanes left, right;
-      load_lanes(left, sq + x - k);
-      load_lanes(right, sq + x + k);
-      const FloatLanes nearer = (left < right ? left : right) + reach;
-      best = nearer < best ? nearer : best;
+      if (static_cast<float>(k) * static_cast<float>(k) >= worst) break;
+      for (const int end = std::min(width, k + kStepsPerTest - 1); k <= end; ++k) {
+        const float reach = static_cast<float>(k) * static_cast<float>(k);
+        FloatLanes left, right;
+        load_lanes(left, sq + x - k);
+        load_lanes(right, sq + x + k);
+        const FloatLanes nearer = (left < right ? left : right) + reach;
+        best = nearer < best ? nearer : best;
+      }
     }
     const int count = x + kLanes <= width ? kLanes : width - x;
     for (int lane = 0; lane < count; ++lane) out[x + lane] = static_cast<float>(std::sqrt(static_cast<double>(best[lane])));
