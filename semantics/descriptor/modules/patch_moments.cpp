@@ -40,54 +40,76 @@ template <int Order>
   }
 }
 
-// Powers d^p of the column offsets d = 0..10, split by the parity of p
-// (lanes p = 0, 2, 4 and p = 1, 3, 5; the fourth lane is unused), so that
-// the horizontal pass is two vector multiply-adds per column pair.
+// Powers d^p of the column offsets d = 0..10, p = 0..5.
 struct OffsetPowers {
-  DoubleLanes even[kMaxPatchRadius + 1], odd[kMaxPatchRadius + 1];
+  double power[kMaxPatchRadius + 1][kMaxOrder + 1];
 };
 constexpr OffsetPowers make_offset_powers() {
   OffsetPowers t{};
   for (int d = 0; d <= kMaxPatchRadius; ++d) {
-    const double v = d;
-    t.even[d] = DoubleLanes{1.0, v * v, v * v * v * v, 0.0};
-    t.odd[d] = DoubleLanes{v, v * v * v, v * v * v * v * v, 0.0};
+    t.power[d][0] = 1.0;
+    for (int p = 1; p <= kMaxOrder; ++p) t.power[d][p] = t.power[d][p - 1] * d;
   }
   return t;
 }
 constexpr OffsetPowers kOffsetPowers = make_offset_powers();
 
-// raw[p][q] = sum_x x^p columns[q][x] over the 2r+1 columns (columns[q]
-// points at the patch's first column), folded the same way in x: even p
-// weight the sum of columns +d and -d, odd p their difference.
+// Column sums are kept interleaved, a column's sums for q = 0..7 in one
+// vector (columns[kMomentColumnStride * x + q], zero past the order), so
+// that the horizontal pass updates all q at once.
+static_assert(kMaxOrder + 1 <= kMomentColumnStride && kMomentColumnStride == kLanes);
+
+// The block of column sums column_block made (block[q] over 8 columns),
+// interleaved into out[kMomentColumnStride * k + q] for its columns k = 0..7.
 template <int Order>
-[[gnu::always_inline]] inline void horizontal_moments(const float* const* columns, int r,
-                                                      double (*raw)[kMaxOrder + 1]) {
-  for (int q = 0; q <= Order; ++q) {
-    const float* col = columns[q];
-    DoubleLanes even_p = {static_cast<double>(col[r]), 0.0, 0.0, 0.0};  // x = 0 counts for p = 0 only
-    DoubleLanes odd_p = {};
-    for (int d = 1; d <= r; ++d) {
-      const double right = col[r + d], left = col[r - d];
-      even_p += kOffsetPowers.even[d] * (right + left);
-      odd_p += kOffsetPowers.odd[d] * (right - left);
+[[gnu::always_inline]] inline void store_interleaved(const FloatLanes* block, float* out) {
+  FloatLanes rows[kLanes];
+  for (int q = 0; q < kLanes; ++q) rows[q] = q <= Order ? block[q] : FloatLanes{};
+  transpose_lanes(rows);
+  for (int k = 0; k < kLanes; ++k) store_lanes(out + kMomentColumnStride * k, rows[k]);
+}
+
+// raw[p][q] = sum_x x^p column_q(x) over the 2r+1 columns (`columns` points
+// at the patch's first column, interleaved), folded in x: even p weight the
+// sum of columns +d and -d, odd p their difference. Double accumulators,
+// four q per vector; every raw[p][q] is the same chain of multiply-adds it
+// would be alone.
+template <int Order>
+[[gnu::always_inline]] inline void horizontal_moments(const float* columns, int r, double (*raw)[kMaxOrder + 1]) {
+  using FourFloats = float __attribute__((vector_size(4 * sizeof(float))));
+  constexpr int kHalves = Order >= 4 ? 2 : 1;  // q = 0..3, then 4..7
+  const auto load = [&](int column, int half, DoubleLanes& out) {
+    FourFloats four;
+    std::memcpy(&four, columns + kMomentColumnStride * column + 4 * half, sizeof four);
+    out = __builtin_convertvector(four, DoubleLanes);
+  };
+  DoubleLanes sums[Order + 1][kHalves] = {};
+  for (int h = 0; h < kHalves; ++h) load(r, h, sums[0][h]);  // x = 0 counts for p = 0 only
+  for (int d = 1; d <= r; ++d) {
+    const double* power = kOffsetPowers.power[d];
+    for (int h = 0; h < kHalves; ++h) {
+      DoubleLanes right, left;
+      load(r + d, h, right);
+      load(r - d, h, left);
+      const DoubleLanes even = right + left, odd = right - left;
+      for (int p = 0; p <= Order; ++p)
+        if (p + 4 * h <= Order) sums[p][h] += power[p] * ((p & 1) ? odd : even);
     }
-    for (int p = 0; p + q <= Order; ++p) raw[p][q] = (p & 1) ? odd_p[p / 2] : even_p[p / 2];
   }
+  for (int p = 0; p <= Order; ++p)
+    for (int q = 0; p + q <= Order; ++q) raw[p][q] = sums[p][q / 4][q % 4];
 }
 
 template <int Order, int W>
 [[gnu::always_inline]] inline void raw_moments(const PatchView& patch, double (*raw)[kMaxOrder + 1]) {
   constexpr int kBlocks = W / kLanes;
   const int r = patch.radius;
-  alignas(32) float column[Order + 1][W];
+  alignas(32) float columns[W * kMomentColumnStride];
   for (int b = 0; b < kBlocks; ++b) {
     FloatLanes block[Order + 1];
     column_block<Order>(patch.row(r) + b * kLanes, patch.stride, r, block);
-    for (int q = 0; q <= Order; ++q) store_lanes(column[q] + b * kLanes, block[q]);
+    store_interleaved<Order>(block, columns + kMomentColumnStride * kLanes * b);
   }
-  const float* columns[Order + 1];
-  for (int q = 0; q <= Order; ++q) columns[q] = column[q];
   horizontal_moments<Order>(columns, r, raw);
 }
 
@@ -102,16 +124,24 @@ template <int Order>
     px[k] = px[k - 1] * -cx;
     py[k] = py[k - 1] * -cy;
   }
+  // The triangular loops are unrolled (Order is a constant): rolled, their
+  // bookkeeping cost as much as the multiply-adds.
   double shifted[Order + 1][Order + 1];  // only p + q <= Order is written and read
+#pragma GCC unroll 6
   for (int q = 0; q <= Order; ++q)
+#pragma GCC unroll 6
     for (int p = 0; p + q <= Order; ++p) {
       double sum = 0.0;
+#pragma GCC unroll 6
       for (int i = 0; i <= p; ++i) sum += kBinomial[p][i] * px[p - i] * raw[i][q];
       shifted[p][q] = sum;
     }
+#pragma GCC unroll 6
   for (int p = 0; p <= Order; ++p)
+#pragma GCC unroll 6
     for (int q = 0; p + q <= Order; ++q) {
       double sum = 0.0;
+#pragma GCC unroll 6
       for (int j = 0; j <= q; ++j) sum += kBinomial[q][j] * py[q - j] * shifted[p][j];
       mu[p][q] = sum;
     }
@@ -155,7 +185,7 @@ template <int Order>
 }
 
 template <int Order>
-[[gnu::always_inline]] inline void moments_of_columns(const float* const* columns, int r, PatchMoments& out) {
+[[gnu::always_inline]] inline void moments_of_columns(const float* columns, int r, PatchMoments& out) {
   double raw[kMaxOrder + 1][kMaxOrder + 1];
   horizontal_moments<Order>(columns, r, raw);
   moments_from_raw<Order>(raw, out);
@@ -163,11 +193,11 @@ template <int Order>
 
 template <int Order>
 [[gnu::always_inline]] inline void column_sums_of_order(const float* centre, std::ptrdiff_t stride, int r, int count,
-                                                        float* const* columns) {
+                                                        float* columns) {
   for (int x = 0; x < count; x += kLanes) {
     FloatLanes block[Order + 1];
     column_block<Order>(centre + x, stride, r, block);
-    for (int q = 0; q <= Order; ++q) store_lanes(columns[q] + x, block[q]);
+    store_interleaved<Order>(block, columns + kMomentColumnStride * x);
   }
 }
 
@@ -191,8 +221,7 @@ void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out)
 }
 
 FACADESLAM_KERNEL
-void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count,
-                        float* const* columns) {
+void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count, float* columns) {
   switch (order) {
     case 0: return column_sums_of_order<0>(centre, stride, r, count, columns);
     case 1: return column_sums_of_order<1>(centre, stride, r, count, columns);
@@ -206,7 +235,7 @@ void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int o
 }
 
 FACADESLAM_KERNEL
-void patch_moments_from_columns(const float* const* columns, int r, int order, PatchMoments& out) {
+void patch_moments_from_columns(const float* columns, int r, int order, PatchMoments& out) {
   out.order = order;
   switch (order) {
     case 0: return moments_of_columns<0>(columns, r, out);

@@ -30,16 +30,17 @@ struct PatchMoments {
 void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out);
 
 // The same in two halves, for patches that share a centre row (StripSums):
-//  - moment_column_sums: columns[q][x] = sum over rows dy = -r..r of
-//    dy^q I(x, row + dy), q = 0..order, for the `count` columns from
-//    `centre` (a pointer into the centre row, rows `stride` floats apart),
-//    in whole blocks of kLanes: it reads and writes up to kLanes - 1 columns
-//    past `count` (PatchView::kReadSlack; the column arrays must be as wide);
-//  - patch_moments_from_columns: the moments of the patch whose first column
-//    columns[q] points at.
+//  - moment_column_sums: the sums over rows dy = -r..r of dy^q I(x, row + dy),
+//    q = 0..order, for the `count` columns x from `centre` (a pointer into
+//    the centre row, rows `stride` floats apart), interleaved: column x's
+//    sums at columns[kMomentColumnStride * x + q] (zero past the order). It
+//    works in whole blocks of 8 columns: it reads and writes up to 7 columns
+//    past `count` (PatchView::kReadSlack; `columns` must be as wide);
+//  - patch_moments_from_columns: the moments of the patch whose first
+//    column's sums `columns` points at.
 // Bit-identical to compute_patch_moments of the same patch.
-void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count,
-                        float* const* columns);
-void patch_moments_from_columns(const float* const* columns, int r, int order, PatchMoments& out);
+inline constexpr int kMomentColumnStride = 8;
+void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count, float* columns);
+void patch_moments_from_columns(const float* columns, int r, int order, PatchMoments& out);
 
 }  // namespace facadeslam::semantics

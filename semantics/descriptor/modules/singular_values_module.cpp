@@ -264,28 +264,6 @@ using DoubleMask = long long __attribute__((vector_size(4 * sizeof(long long))))
   settled = good;
 }
 
-// The 8 x 8 block rows[0..7] transposed in place: rows[k] becomes column k
-// (three rounds of two-source shuffles: unpack, 64-bit pairs, 128-bit halves).
-[[gnu::always_inline]] inline void transpose_lanes(FloatLanes* rows) {
-  FloatLanes t[kLanes], s[kLanes];
-  for (int k = 0; k < 4; ++k) {
-    t[2 * k] = __builtin_shufflevector(rows[2 * k], rows[2 * k + 1], 0, 8, 1, 9, 4, 12, 5, 13);
-    t[2 * k + 1] = __builtin_shufflevector(rows[2 * k], rows[2 * k + 1], 2, 10, 3, 11, 6, 14, 7, 15);
-  }
-  for (int h = 0; h < 2; ++h) {  // rows 0-3, then 4-7
-    const FloatLanes* u = t + 4 * h;
-    FloatLanes* o = s + 4 * h;
-    o[0] = __builtin_shufflevector(u[0], u[2], 0, 1, 8, 9, 4, 5, 12, 13);
-    o[1] = __builtin_shufflevector(u[0], u[2], 2, 3, 10, 11, 6, 7, 14, 15);
-    o[2] = __builtin_shufflevector(u[1], u[3], 0, 1, 8, 9, 4, 5, 12, 13);
-    o[3] = __builtin_shufflevector(u[1], u[3], 2, 3, 10, 11, 6, 7, 14, 15);
-  }
-  for (int k = 0; k < 4; ++k) {
-    rows[k] = __builtin_shufflevector(s[k], s[k + 4], 0, 1, 2, 3, 8, 9, 10, 11);
-    rows[k + 4] = __builtin_shufflevector(s[k], s[k + 4], 4, 5, 6, 7, 12, 13, 14, 15);
-  }
-}
-
 // Square roots of the lanes (a handful per step: not worth a vector
 // intrinsic, and std::sqrt keeps the baseline build portable). Vectors are
 // passed by reference: by value their ABI would depend on the target.

@@ -153,9 +153,9 @@ void StripSums::configure(const PreparedImage& image, int radius, PlaneSet stati
     CV_Assert(order <= kMaxMomentOrder && image.has(colour_plane(c)));
     const auto bit = plane_bit(colour_plane(c));
     // As wide as the plane plus the read slack: moment_column_sums writes
-    // whole blocks, up to kLanes - 1 columns past a span.
+    // whole blocks, up to 7 columns past a span.
     const auto width = static_cast<std::size_t>(image.planes[bit].cols + PatchView::kReadSlack);
-    for (int q = 0; q <= order; ++q) columns_[bit].moment[static_cast<std::size_t>(q)].resize(width);
+    columns_[bit].moments.resize(width * kMomentColumnStride);
   }
   for (int p = 0; p < kPlaneCount; ++p) {
     const auto bit = static_cast<std::size_t>(p);
@@ -193,9 +193,8 @@ void StripSums::compute_regions(const cv::Mat& plane, int first, int last, Colum
 
 void StripSums::compute_moments(const cv::Mat& plane, int order, int first, int last, Columns& c) const {
   const float* centre = plane.ptr<float>(row_ + image_->border) + first;
-  float* columns[kMaxMomentOrder + 1];
-  for (int q = 0; q <= order; ++q) columns[q] = c.moment[static_cast<std::size_t>(q)].data() + first;
-  moment_column_sums(centre, static_cast<std::ptrdiff_t>(plane.step1()), radius_, order, last - first, columns);
+  moment_column_sums(centre, static_cast<std::ptrdiff_t>(plane.step1()), radius_, order, last - first,
+                     c.moments.data() + kMomentColumnStride * static_cast<std::size_t>(first));
 }
 
 void StripSums::compute(int row, const std::vector<int>& centres) {
@@ -228,9 +227,7 @@ void StripSums::moments(int channel, int x, PatchMoments& out) const {
   CV_Assert(order >= 0);
   const Columns& c = columns_[plane_bit(colour_plane(channel))];
   const auto first = static_cast<std::size_t>(x + image_->border - radius_);
-  const float* columns[kMaxMomentOrder + 1];
-  for (int q = 0; q <= order; ++q) columns[q] = c.moment[static_cast<std::size_t>(q)].data() + first;
-  patch_moments_from_columns(columns, radius_, order, out);
+  patch_moments_from_columns(c.moments.data() + kMomentColumnStride * first, radius_, order, out);
 }
 
 MeanStd StripSums::mean_std(PlaneId p, int x) const {
