@@ -201,6 +201,23 @@ template <int Order>
   }
 }
 
+// f.template operator()<Order>() for Order = order (0..5): the kernels take
+// the order as a template parameter, for fixed trip counts. `f` is an
+// always-inline lambda, so it is compiled for the caller's clone.
+template <class F>
+[[gnu::always_inline]] inline void with_order(int order, const F& f) {
+  switch (order) {
+    case 0: return f.template operator()<0>();
+    case 1: return f.template operator()<1>();
+    case 2: return f.template operator()<2>();
+    case 3: return f.template operator()<3>();
+    case 4: return f.template operator()<4>();
+    case 5: return f.template operator()<5>();
+    default: break;
+  }
+  CV_Error(cv::Error::StsOutOfRange, "moment order must be 0..5");
+}
+
 }  // namespace
 
 FACADESLAM_KERNEL
@@ -208,45 +225,20 @@ void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out)
   // Not cleared first: every entry up to `order` is written below (clearing
   // the whole struct cost more than the low orders themselves).
   out.order = order;
-  switch (order) {
-    case 0: return moments_of_order<0>(patch, out);
-    case 1: return moments_of_order<1>(patch, out);
-    case 2: return moments_of_order<2>(patch, out);
-    case 3: return moments_of_order<3>(patch, out);
-    case 4: return moments_of_order<4>(patch, out);
-    case 5: return moments_of_order<5>(patch, out);
-    default: break;
-  }
-  CV_Error(cv::Error::StsOutOfRange, "moment order must be 0..5");
+  with_order(order, [&]<int Order>() __attribute__((always_inline)) { moments_of_order<Order>(patch, out); });
 }
 
 FACADESLAM_KERNEL
 void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count, float* columns) {
-  switch (order) {
-    case 0: return column_sums_of_order<0>(centre, stride, r, count, columns);
-    case 1: return column_sums_of_order<1>(centre, stride, r, count, columns);
-    case 2: return column_sums_of_order<2>(centre, stride, r, count, columns);
-    case 3: return column_sums_of_order<3>(centre, stride, r, count, columns);
-    case 4: return column_sums_of_order<4>(centre, stride, r, count, columns);
-    case 5: return column_sums_of_order<5>(centre, stride, r, count, columns);
-    default: break;
-  }
-  CV_Error(cv::Error::StsOutOfRange, "moment order must be 0..5");
+  with_order(order, [&]<int Order>() __attribute__((always_inline)) {
+    column_sums_of_order<Order>(centre, stride, r, count, columns);
+  });
 }
 
 FACADESLAM_KERNEL
 void patch_moments_from_columns(const float* columns, int r, int order, PatchMoments& out) {
   out.order = order;
-  switch (order) {
-    case 0: return moments_of_columns<0>(columns, r, out);
-    case 1: return moments_of_columns<1>(columns, r, out);
-    case 2: return moments_of_columns<2>(columns, r, out);
-    case 3: return moments_of_columns<3>(columns, r, out);
-    case 4: return moments_of_columns<4>(columns, r, out);
-    case 5: return moments_of_columns<5>(columns, r, out);
-    default: break;
-  }
-  CV_Error(cv::Error::StsOutOfRange, "moment order must be 0..5");
+  with_order(order, [&]<int Order>() __attribute__((always_inline)) { moments_of_columns<Order>(columns, r, out); });
 }
 
 }  // namespace facadeslam::semantics

@@ -65,72 +65,6 @@ void tridiagonal_eigenvalues(double* d, double* e, int m) {
   }
 }
 
-// The `count` largest eigenvalues of the m x m symmetric positive
-// semi-definite tridiagonal with diagonal d and off-diagonal e[0..m-2],
-// descending, by Laguerre's iteration on the characteristic polynomial with
-// the roots already found divided out (Maehly). From above every root,
-// Laguerre's step on a real-rooted polynomial goes monotonically down to the
-// largest one, in a few cubically convergent steps: the Gershgorin bound
-// starts the first root, and trace - (roots found) bounds the next one, as
-// no eigenvalue is negative. Returns false when that bound does not separate
-// the next root from the last (near-multiple roots) or the iteration does
-// not settle: the caller then solves the whole matrix.
-bool top_tridiagonal_eigenvalues(const double* d, const double* e, int m, int count, double* out) {
-  double upper = 0.0, trace = 0.0;
-  for (int i = 0; i < m; ++i) {
-    const double left = i > 0 ? std::abs(e[i - 1]) : 0.0, right = i + 1 < m ? std::abs(e[i]) : 0.0;
-    upper = std::max(upper, d[i] + left + right);
-    trace += d[i];
-  }
-  if (!(upper > 0.0)) return false;
-  const double tolerance = 1e-14 * upper;
-  double found_sum = 0.0;
-  for (int k = 0; k < count; ++k) {
-    double x = k == 0 ? upper : std::min(upper, trace - found_sum) + tolerance;
-    if (k > 0 && !(x < out[k - 1] - 1e-6 * upper)) return false;
-    const int degree = m - k;
-    bool settled = false;
-    for (int iteration = 0; iteration < 40 && !settled; ++iteration) {
-      // p, p', p'' of det(T - x I) by the three-term recurrence, scaled by
-      // the largest entry so that nothing overflows.
-      double p0 = 1.0, p1 = d[0] - x, dp0 = 0.0, dp1 = -1.0, ddp0 = 0.0, ddp1 = 0.0;
-      for (int i = 1; i < m; ++i) {
-        const double a = d[i] - x, b = e[i - 1] * e[i - 1];
-        const double p2 = a * p1 - b * p0;
-        const double dp2 = -p1 + a * dp1 - b * dp0;
-        const double ddp2 = -2.0 * dp1 + a * ddp1 - b * ddp0;
-        p0 = p1, p1 = p2, dp0 = dp1, dp1 = dp2, ddp0 = ddp1, ddp1 = ddp2;
-        const double scale = std::max({std::abs(p1), std::abs(dp1), std::abs(ddp1)});
-        if (scale > 1e100) {
-          const double inverse = 1.0 / scale;
-          p0 *= inverse, p1 *= inverse, dp0 *= inverse, dp1 *= inverse, ddp0 *= inverse, ddp1 *= inverse;
-        }
-      }
-      if (p1 == 0.0) {  // x is a root
-        settled = true;
-        break;
-      }
-      double g = dp1 / p1, h = g * g - ddp1 / p1;
-      for (int j = 0; j < k; ++j) {  // divide out the roots found
-        const double inverse = 1.0 / (x - out[j]);
-        g -= inverse;
-        h -= inverse * inverse;
-      }
-      const double n = degree;
-      const double root = std::sqrt(std::max(0.0, (n - 1.0) * (n * h - g * g)));
-      const double denominator = g > 0.0 ? g + root : g - root;
-      if (!(std::abs(denominator) > 0.0)) return false;
-      const double step = n / denominator;
-      x -= step;
-      settled = std::abs(step) <= tolerance;
-    }
-    if (!settled || !std::isfinite(x)) return false;
-    out[k] = x;
-    found_sum += x;
-  }
-  return true;
-}
-
 // The three eigenvalues of the symmetric tridiagonal [[d0 e0 0] [e0 d1 e1]
 // [0 e1 d2]], left in d, in closed form (the trigonometric solution of the
 // characteristic cubic): sigma1 alone takes three steps, and this is
@@ -150,16 +84,12 @@ void symmetric_3x3_eigenvalues(double* d, const double* e) {
   d[1] = 3.0 * mean - d[0] - d[2];
 }
 
-// The `count` largest singular values, descending, from the Lanczos
-// tridiagonal of `steps` steps (diagonal d, off-diagonal e[0..steps-2];
-// both are overwritten): square roots of its largest eigenvalues.
+// The `count` largest singular values, descending, from the tridiagonal of
+// `steps` steps (diagonal d, off-diagonal e[0..steps-2]; both are
+// overwritten) by solving it whole: square roots of its largest
+// eigenvalues. For the lanes the Laguerre iteration leaves unsettled.
 void largest_singular_values(double* d, double* e, int steps, int count, double* out) {
   const int found = std::min(count, steps);
-  double top[3];
-  if (steps > 3 && top_tridiagonal_eigenvalues(d, e, steps, found, top)) {
-    for (int k = 0; k < found; ++k) out[k] = std::sqrt(std::max(top[k], 0.0));
-    return;
-  }
   if (steps == 3) symmetric_3x3_eigenvalues(d, e);
   else tridiagonal_eigenvalues(d, e, steps);
   for (int k = 0; k < found; ++k) {  // selection of the largest few (m <= 9)
@@ -181,12 +111,18 @@ using DoubleMask = long long __attribute__((vector_size(4 * sizeof(long long))))
 
 [[gnu::always_inline]] inline bool any_lane(const DoubleMask& m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
-// top_tridiagonal_eigenvalues on four tridiagonals at once, one per lane
-// (diagonal d, off-diagonal e[0..m-2] with e[m-1] = 0): the same Laguerre
-// steps lane by lane, each lane stopping when its step is below tolerance.
-// `settled` marks the lanes where every root settled; the others are left
-// to the scalar solver, as are its fallbacks (near-multiple roots, no
-// convergence).
+// The `count` largest eigenvalues, descending, of four m x m symmetric
+// positive semi-definite tridiagonals at once, one per lane (diagonal d,
+// off-diagonal e[0..m-2] with e[m-1] = 0), by Laguerre's iteration on the
+// characteristic polynomial with the roots already found divided out
+// (Maehly). From above every root, Laguerre's step on a real-rooted
+// polynomial goes monotonically down to the largest one, in a few cubically
+// convergent steps: the Gershgorin bound starts the first root, and
+// trace - (roots found) bounds the next one, as no eigenvalue is negative.
+// Each lane stops when its step is below tolerance. `settled` marks the
+// lanes where every root settled; a lane is left unsettled when that bound
+// does not separate its next root from the last (near-multiple roots) or
+// its iteration does not settle, for largest_singular_values to solve whole.
 [[gnu::always_inline]] inline void top_tridiagonal_eigenvalues_4(const DoubleLanes* d, const DoubleLanes* e, int m,
                                                                  int count, DoubleLanes* out, DoubleMask& settled) {
   const DoubleLanes zero = {}, one = zero + 1.0;
@@ -212,6 +148,8 @@ using DoubleMask = long long __attribute__((vector_size(4 * sizeof(long long))))
     const double n = m - k;
     DoubleMask done = ~good;
     for (int iteration = 0; iteration < 40 && any_lane(~done); ++iteration) {
+      // p, p', p'' of det(T - x I) by the three-term recurrence, scaled by
+      // the largest entry so that nothing overflows.
       DoubleLanes p0 = one, p1 = d[0] - x, dp0 = zero, dp1 = -one, ddp0 = zero, ddp1 = zero;
       for (int i = 1; i < m; ++i) {
         const DoubleLanes a = d[i] - x, b = e[i - 1] * e[i - 1];
