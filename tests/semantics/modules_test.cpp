@@ -8,6 +8,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "semantics/descriptor/colour_invariants.hpp"
+#include "semantics/descriptor/extraction.hpp"
+#include "semantics/descriptor/genome.hpp"
 #include "semantics/descriptor/edge_distance.hpp"
 #include "semantics/descriptor/modules/edge_distance_module.hpp"
 #include "semantics/descriptor/modules/gradient_angles_module.hpp"
@@ -168,6 +170,37 @@ TEST(SingularValues, APatchInABatchEqualsThePatchAlone) {
         EXPECT_EQ(top_singular_values(patches[static_cast<std::size_t>(l)], count, alone), steps[l]);
         for (int k = 0; k < count; ++k) EXPECT_EQ(together[l][k], alone[k]) << "lane " << l << " sigma" << k + 1;
       }
+    }
+  }
+}
+
+TEST(SingularValues, ModuleAloneEqualsTheExtractorsBatches) {
+  // extract() computes the module in batches of lanes; the module called on
+  // one keypoint's context computes it alone. Same bits, and only the active
+  // values are written.
+  DescriptorParams p = Genome::thesis_best().decode();
+  p.activation.reset();
+  const int first = module_offset(Module::singular_values);
+  const int active[] = {0, 3, 4, 8};  // sv1_c0, sv1_c1, sv2_c1, sv3_c2
+  for (const int v : active) p.activation.set(static_cast<std::size_t>(first + v));
+  const PreparedImage prepared = prepare(test_util::textured_image({96, 72}, 5), p);
+  const std::vector<cv::Point2f> points{{10, 10}, {40, 33}, {41, 33}, {95, 71}, {0, 0}, {60, 5}};
+  const cv::Mat batch = extract(prepared, points, p);
+  ASSERT_EQ(batch.cols, 4);
+  const std::array<PatchMoments, 3> moments{};
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const int x = cvRound(points[k].x), y = cvRound(points[k].y);
+    const ModuleContext context{prepared, points[k], x, y, p.patch_radius, moments};
+    std::array<float, kSingularValueCount> values;
+    values.fill(-99.0f);
+    singular_values_module(context, module_bits(p.activation, Module::singular_values), values.data());
+    for (int i = 0; i < kSingularValueCount; ++i) {
+      const auto column = std::find(std::begin(active), std::end(active), i) - std::begin(active);
+      const float got = values[static_cast<std::size_t>(i)];
+      if (column < 4)
+        EXPECT_EQ(got, batch.at<float>(static_cast<int>(k), static_cast<int>(column))) << "keypoint " << k << " value " << i;
+      else
+        EXPECT_EQ(got, -99.0f) << "inactive value " << i << " written";
     }
   }
 }
