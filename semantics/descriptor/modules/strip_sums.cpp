@@ -18,16 +18,19 @@ namespace {
 FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride, int r, int count, float* sum,
                                       float* squares) {
   constexpr int kBlock = 4;  // vectors per block: 32 columns, two cache lines of each row
+  constexpr int kPrefetchBlocks = 4;  // measured: 1 -> 4 took ~5 % off the thesis genome's extraction, 8 less
   int x = 0;
   for (; x + kBlock * kLanes <= count; x += kBlock * kLanes) {
     FloatLanes c[kBlock], s[kBlock] = {}, q[kBlock] = {};
     for (int b = 0; b < kBlock; ++b) load_lanes(c[b], centre + x + b * kLanes);
     for (int dy = -r; dy <= r; ++dy) {
       const float* row = centre + dy * stride + x;
-      // The next block's two lines of this row: 2r+1 rows are more streams
-      // than the hardware prefetcher follows.
-      __builtin_prefetch(row + kBlock * kLanes);
-      __builtin_prefetch(row + kBlock * kLanes + 16);
+      // The two lines of this row kPrefetchBlocks blocks ahead: 2r+1 rows
+      // are more streams than the hardware prefetcher follows, and the
+      // strips of a row's planes do not stay in L2 until the next row, so
+      // the lines come from L3, further away than one block's work.
+      __builtin_prefetch(row + kPrefetchBlocks * kBlock * kLanes);
+      __builtin_prefetch(row + kPrefetchBlocks * kBlock * kLanes + 16);
       for (int b = 0; b < kBlock; ++b) {
         FloatLanes d;
         load_lanes(d, row + b * kLanes);
