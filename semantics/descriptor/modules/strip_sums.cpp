@@ -70,12 +70,16 @@ FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride
 // blocked like deviation_sums.
 FACADESLAM_KERNEL void half_sums(const float* centre, std::ptrdiff_t stride, int r, int count, float* top,
                                  float* bottom) {
+  constexpr int kPrefetchBlocks = 8;  // blocks of 16 columns: the same 512 bytes ahead as deviation_sums
   int x = 0;
   for (; x + 2 * kLanes <= count; x += 2 * kLanes) {
     FloatLanes t[2] = {}, b[2] = {};
     for (int d = 1; d <= r; ++d) {
       const float* up = centre + (d - r - 1) * stride + x;
       const float* down = centre + d * stride + x;
+      // Each row's line kPrefetchBlocks blocks ahead, as in deviation_sums.
+      __builtin_prefetch(up + kPrefetchBlocks * 2 * kLanes);
+      __builtin_prefetch(down + kPrefetchBlocks * 2 * kLanes);
       for (int k = 0; k < 2; ++k) {
         FloatLanes u, v;
         load_lanes(u, up + k * kLanes);
