@@ -87,17 +87,28 @@ DescriptorParams only_module(Module m) {
   return p;
 }
 
+// prepare() + extract() with `p` on `points` (extract() alone when
+// `prepare_each` is false); returns the CPU seconds per image.
+double run_genome(benchmark::State& state, const DescriptorParams& p, const std::vector<cv::Point2f>& points,
+                  bool prepare_each = true) {
+  cv::Mat d;
+  PreparedImage prepared = prepare(frame(), p);
+  const double start = thread_seconds();
+  for (auto _ : state) {
+    if (prepare_each) prepare(frame(), p, prepared);
+    d = extract(prepared, points, p);
+    benchmark::DoNotOptimize(d.data);
+  }
+  const double seconds = thread_seconds() - start;
+  per_keypoint(state, seconds, points.size());
+  state.counters["values"] = d.cols;
+  return seconds / static_cast<double>(state.iterations());
+}
+
 void BM_ModuleExtract(benchmark::State& state) {
   const auto m = static_cast<Module>(state.range(0));
   state.SetLabel(std::string(module_name(m)));
-  const DescriptorParams p = only_module(m);
-  const PreparedImage prepared = prepare(frame(), p);
-  const double start = thread_seconds();
-  for (auto _ : state) {
-    cv::Mat d = extract(prepared, grid_keypoints(), p);
-    benchmark::DoNotOptimize(d.data);
-  }
-  per_keypoint(state, thread_seconds() - start, grid_keypoints().size());
+  run_genome(state, only_module(m), grid_keypoints(), false);
 }
 BENCHMARK(BM_ModuleExtract)->DenseRange(0, kModuleCount - 1)->Unit(benchmark::kMillisecond);
 
@@ -116,20 +127,15 @@ void BM_ModulePrepare(benchmark::State& state) {
 BENCHMARK(BM_ModulePrepare)->DenseRange(0, kModuleCount - 1)->Unit(benchmark::kMillisecond);
 
 // The singular-value module's cost grows with the highest active value per
-// channel (3 Lanczos steps each): sigma1..sigma_k of all three channels.
+// channel (3 bidiagonalisation steps each): sigma1..sigma_k of all three
+// channels.
 void BM_SingularValuesUpTo(benchmark::State& state) {
   const int k = static_cast<int>(state.range(0));
   DescriptorParams p = only_module(Module::singular_values);
   p.activation.reset();
   for (int c = 0; c < 3; ++c)
     for (int i = 0; i < k; ++i) p.activation.set(static_cast<std::size_t>(module_offset(Module::singular_values) + 3 * c + i));
-  const PreparedImage prepared = prepare(frame(), p);
-  const double start = thread_seconds();
-  for (auto _ : state) {
-    cv::Mat d = extract(prepared, grid_keypoints(), p);
-    benchmark::DoNotOptimize(d.data);
-  }
-  per_keypoint(state, thread_seconds() - start, grid_keypoints().size());
+  run_genome(state, p, grid_keypoints(), false);
 }
 BENCHMARK(BM_SingularValuesUpTo)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
@@ -173,24 +179,6 @@ double run_sift(benchmark::State& state, const std::vector<cv::Point2f>& points,
   const double seconds = thread_seconds() - start;
   per_keypoint(state, seconds, points.size());
   state.counters["descriptors"] = descriptors.rows;
-  return seconds / static_cast<double>(state.iterations());
-}
-
-// prepare() + extract() with `p` on `points` (extract() alone when
-// `prepare_each` is false); returns the CPU seconds per image.
-double run_genome(benchmark::State& state, const DescriptorParams& p, const std::vector<cv::Point2f>& points,
-                  bool prepare_each = true) {
-  cv::Mat d;
-  PreparedImage prepared = prepare(frame(), p);
-  const double start = thread_seconds();
-  for (auto _ : state) {
-    if (prepare_each) prepare(frame(), p, prepared);
-    d = extract(prepared, points, p);
-    benchmark::DoNotOptimize(d.data);
-  }
-  const double seconds = thread_seconds() - start;
-  per_keypoint(state, seconds, points.size());
-  state.counters["values"] = d.cols;
   return seconds / static_cast<double>(state.iterations());
 }
 
