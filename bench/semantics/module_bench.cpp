@@ -56,6 +56,19 @@ double thread_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// Runs body() once per benchmark iteration (one image) and returns the CPU
+// seconds per iteration; sets the ns_per_keypoint and keypoints counters.
+template <class Body>
+double seconds_per_image(benchmark::State& state, std::size_t keypoints, Body&& body) {
+  const double start = thread_seconds();
+  for (auto _ : state) body();
+  const double seconds = (thread_seconds() - start) / static_cast<double>(state.iterations());
+  const double n = static_cast<double>(keypoints);
+  state.counters["ns_per_keypoint"] = 1e9 * seconds / n;
+  state.counters["keypoints"] = n;
+  return seconds;
+}
+
 const cv::Mat& frame() {
   static const cv::Mat image = [] {
     cv::setNumThreads(1);
@@ -78,8 +91,6 @@ const std::vector<cv::Point2f>& grid_keypoints() {
   return points;
 }
 
-void per_keypoint(benchmark::State& state, double seconds, std::size_t keypoints);
-
 DescriptorParams only_module(Module m) {
   DescriptorParams p = Genome::thesis_best().decode();
   p.activation.reset();
@@ -93,16 +104,13 @@ double run_genome(benchmark::State& state, const DescriptorParams& p, const std:
                   bool prepare_each = true) {
   cv::Mat d;
   PreparedImage prepared = prepare(frame(), p);
-  const double start = thread_seconds();
-  for (auto _ : state) {
+  const double seconds = seconds_per_image(state, points.size(), [&] {
     if (prepare_each) prepare(frame(), p, prepared);
     d = extract(prepared, points, p);
     benchmark::DoNotOptimize(d.data);
-  }
-  const double seconds = thread_seconds() - start;
-  per_keypoint(state, seconds, points.size());
+  });
   state.counters["values"] = d.cols;
-  return seconds / static_cast<double>(state.iterations());
+  return seconds;
 }
 
 void BM_ModuleExtract(benchmark::State& state) {
@@ -117,12 +125,10 @@ void BM_ModulePrepare(benchmark::State& state) {
   state.SetLabel(std::string(module_name(m)));
   const DescriptorParams p = only_module(m);
   PreparedImage prepared = prepare(frame(), p);
-  const double start = thread_seconds();
-  for (auto _ : state) {
+  seconds_per_image(state, grid_keypoints().size(), [&] {
     prepare(frame(), p, prepared);
     benchmark::DoNotOptimize(prepared.planes[0].data);
-  }
-  per_keypoint(state, thread_seconds() - start, grid_keypoints().size());
+  });
 }
 BENCHMARK(BM_ModulePrepare)->DenseRange(0, kModuleCount - 1)->Unit(benchmark::kMillisecond);
 
@@ -157,12 +163,6 @@ const std::vector<cv::Point2f>& sparse_keypoints() {
   return points;
 }
 
-void per_keypoint(benchmark::State& state, double seconds, std::size_t keypoints) {
-  const double n = static_cast<double>(keypoints);
-  state.counters["ns_per_keypoint"] = 1e9 * seconds / (static_cast<double>(state.iterations()) * n);
-  state.counters["keypoints"] = n;
-}
-
 // cv::SIFT::compute on `points` with KeyPoint::size `size`; returns the CPU
 // seconds per image.
 double run_sift(benchmark::State& state, const std::vector<cv::Point2f>& points, float size) {
@@ -170,16 +170,13 @@ double run_sift(benchmark::State& state, const std::vector<cv::Point2f>& points,
   for (const cv::Point2f& p : points) keypoints.emplace_back(p, size);
   const cv::Ptr<cv::SIFT> sift = cv::SIFT::create();
   cv::Mat descriptors;
-  const double start = thread_seconds();
-  for (auto _ : state) {
+  const double seconds = seconds_per_image(state, points.size(), [&] {
     std::vector<cv::KeyPoint> kps = keypoints;  // compute() may drop or reorder keypoints
     sift->compute(frame(), kps, descriptors);
     benchmark::DoNotOptimize(descriptors.data);
-  }
-  const double seconds = thread_seconds() - start;
-  per_keypoint(state, seconds, points.size());
+  });
   state.counters["descriptors"] = descriptors.rows;
-  return seconds / static_cast<double>(state.iterations());
+  return seconds;
 }
 
 // Peers' seconds per image, from the SIFT benchmarks (registered first).
@@ -203,15 +200,12 @@ BENCHMARK(BM_SiftSparse)->Unit(benchmark::kMillisecond);
 double run_point_descriptor(benchmark::State& state, std::string_view name) {
   const auto descriptor = make_point_descriptor(name, Genome::thesis_best());
   cv::Mat d;
-  const double start = thread_seconds();
-  for (auto _ : state) {
+  const double seconds = seconds_per_image(state, grid_keypoints().size(), [&] {
     d = descriptor->compute(frame(), grid_keypoints());
     benchmark::DoNotOptimize(d.data);
-  }
-  const double seconds = thread_seconds() - start;
-  per_keypoint(state, seconds, grid_keypoints().size());
+  });
   state.counters["values"] = d.cols;
-  return seconds / static_cast<double>(state.iterations());
+  return seconds;
 }
 
 double g_opponent_sift_seconds = 0.0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "semantics/descriptor/descriptor_params.hpp"
 #include "semantics/descriptor/kernel_support.hpp"
@@ -67,8 +66,7 @@ void tridiagonal_eigenvalues(double* d, double* e, int m) {
 
 // The three eigenvalues of the symmetric tridiagonal [[d0 e0 0] [e0 d1 e1]
 // [0 e1 d2]], left in d, in closed form (the trigonometric solution of the
-// characteristic cubic): sigma1 alone takes three steps, and this is
-// several times cheaper than the iteration.
+// characteristic cubic): the fallback for sigma1 alone (three steps).
 void symmetric_3x3_eigenvalues(double* d, const double* e) {
   const double off = e[0] * e[0] + e[1] * e[1];
   const double mean = (d[0] + d[1] + d[2]) / 3.0;
