@@ -37,38 +37,78 @@ FACADESLAM_KERNEL void column_distances(const cv::Mat& edges, cv::Mat& g) {
 // d(x)^2 = min over q of (x - q)^2 + g(q)^2. Every value is an integer below
 // 2^24, so float arithmetic is exact. Each block of 8 pixels widens its
 // search k = 1, 2, ... until k^2 reaches the largest squared distance it has
-// found (no farther column can be closer), branch-free across the lanes:
-// dense Canny edges keep k small, and the cost follows the distances. Same
-// result as a lower envelope of parabolas (Felzenszwalb & Huttenlocher)
-// without its data-dependent branches. The stop test (a maximum across the
-// lanes, a serial chain) runs every kStepsPerTest steps: a step past the
-// bound cannot change a lane (its candidates are >= k^2 >= the lane's best),
-// so the result is the same. `squares` holds g^2 with `width` columns of
-// kFar^2 on both sides.
-FACADESLAM_KERNEL void row_distances(const float* g, int width, float* out, std::vector<float>& squares) {
-  squares.assign(static_cast<std::size_t>(3 * width + kLanes), kFar * kFar);
-  float* sq = squares.data() + width;
+// found (no farther column can be closer): dense Canny edges keep k small,
+// and the cost follows the distances. Same result as a lower envelope of
+// parabolas (Felzenszwalb & Huttenlocher) without its data-dependent
+// branches. A step past the bound cannot change a lane (its candidates are
+// >= k^2 >= the lane's best), so steps may be taken past it:
+//  - pass 1 takes the first kFirstSteps steps of every block unconditionally
+//    and lists the blocks whose bound lies beyond (no branch per block: the
+//    stop test's outcome varies from block to block and mispredicted);
+//  - pass 2 continues the listed blocks, testing the bound (a maximum across
+//    the lanes, a serial chain) every kStepsPerTest steps;
+//  - pass 3 takes the square roots.
+// `squares` holds g^2 with `width` columns of kFar^2 on both sides, then the
+// best squared distances and the list of unfinished blocks.
+struct RowScratch {
+  std::vector<float> squares, best;
+  std::vector<int> unfinished;
+};
+
+[[gnu::always_inline]] inline void search_steps(const float* sq, int x, int first, int last, FloatLanes& best) {
+  for (int k = first; k <= last; ++k) {
+    const float reach = static_cast<float>(k) * static_cast<float>(k);
+    FloatLanes left, right;
+    load_lanes(left, sq + x - k);
+    load_lanes(right, sq + x + k);
+    const FloatLanes nearer = (left < right ? left : right) + reach;
+    best = nearer < best ? nearer : best;
+  }
+}
+
+[[gnu::always_inline]] inline float lane_max(const FloatLanes& v) {
+  float worst = v[0];
+  for (int lane = 1; lane < kLanes; ++lane) worst = v[lane] > worst ? v[lane] : worst;
+  return worst;
+}
+
+FACADESLAM_KERNEL void row_distances(const float* g, int width, float* out, RowScratch& scratch) {
+  const int blocks = (width + kLanes - 1) / kLanes;
+  scratch.squares.assign(static_cast<std::size_t>(3 * width + kLanes), kFar * kFar);
+  scratch.best.resize(static_cast<std::size_t>(blocks * kLanes));
+  scratch.unfinished.resize(static_cast<std::size_t>(blocks));
+  float* sq = scratch.squares.data() + width;
+  float* best_of = scratch.best.data();
+  int* unfinished = scratch.unfinished.data();
   for (int q = 0; q < width; ++q) sq[q] = g[q] * g[q];
+
+  constexpr int kFirstSteps = 4, kStepsPerTest = 4;
+  const int first_steps = std::min(width, kFirstSteps);
+  const float first_bound = static_cast<float>(first_steps + 1) * static_cast<float>(first_steps + 1);
+  int unfinished_count = 0;
   for (int x = 0; x < width; x += kLanes) {
     FloatLanes best;
     load_lanes(best, sq + x);
-    constexpr int kStepsPerTest = 4;
-    for (int k = 1; k <= width;) {
-      float worst = best[0];
-      for (int lane = 1; lane < kLanes; ++lane) worst = best[lane] > worst ? best[lane] : worst;
-      if (static_cast<float>(k) * static_cast<float>(k) >= worst) break;
-      for (const int end = std::min(width, k + kStepsPerTest - 1); k <= end; ++k) {
-        const float reach = static_cast<float>(k) * static_cast<float>(k);
-        FloatLanes left, right;
-        load_lanes(left, sq + x - k);
-        load_lanes(right, sq + x + k);
-        const FloatLanes nearer = (left < right ? left : right) + reach;
-        best = nearer < best ? nearer : best;
-      }
-    }
-    const int count = x + kLanes <= width ? kLanes : width - x;
-    for (int lane = 0; lane < count; ++lane) out[x + lane] = static_cast<float>(std::sqrt(static_cast<double>(best[lane])));
+    search_steps(sq, x, 1, first_steps, best);
+    store_lanes(best_of + x, best);
+    unfinished[unfinished_count] = x;
+    unfinished_count += first_steps < width && first_bound < lane_max(best);
   }
+  for (int i = 0; i < unfinished_count; ++i) {
+    const int x = unfinished[i];
+    FloatLanes best;
+    load_lanes(best, best_of + x);
+    for (int k = first_steps + 1; k <= width;) {
+      if (static_cast<float>(k) * static_cast<float>(k) >= lane_max(best)) break;
+      const int end = std::min(width, k + kStepsPerTest - 1);
+      search_steps(sq, x, k, end, best);
+      k = end + 1;
+    }
+    store_lanes(best_of + x, best);
+  }
+  // A float square root of these exact integers is the float of the double
+  // one (double rounding is innocuous for sqrt: 53 >= 2 * 24 + 2 bits).
+  for (int x = 0; x < width; ++x) out[x] = std::sqrt(best_of[x]);
 }
 
 }  // namespace
@@ -81,8 +121,8 @@ void distance_to_edges(const cv::Mat& edges, cv::Mat& distance) {
   }
   cv::Mat column(edges.size(), CV_32F);
   column_distances(edges, column);
-  std::vector<float> squares;
-  for (int y = 0; y < edges.rows; ++y) row_distances(column.ptr<float>(y), edges.cols, distance.ptr<float>(y), squares);
+  RowScratch scratch;
+  for (int y = 0; y < edges.rows; ++y) row_distances(column.ptr<float>(y), edges.cols, distance.ptr<float>(y), scratch);
 }
 
 }  // namespace facadeslam::semantics
