@@ -21,18 +21,27 @@
 //    (edge_distance.hpp);
 //  - near the image edge the patch continues the image by reflection
 //    (BORDER_REFLECT_101), as the modular descriptor does.
+#include <memory>
+
 #include "semantics/point_descriptors/point_descriptor.hpp"
 
 namespace facadeslam::semantics {
 
 class EddDescriptor : public PointDescriptor {
  public:
+  EddDescriptor();
+  ~EddDescriptor() override;
+
   static constexpr int kRadius = 4;  // 9 x 9 patch
   static constexpr int kWidth = 113;
 
   std::string_view name() const override { return "edd"; }
   int width() const override { return kWidth; }
   cv::Mat compute(const cv::Mat& bgr, const std::vector<cv::Point2f>& keypoints) override;
+
+ private:
+  struct Planes;  // the per-image planes, kept between calls (no page faults per image)
+  std::unique_ptr<Planes> planes_;
 };
 
 }  // namespace facadeslam::semantics

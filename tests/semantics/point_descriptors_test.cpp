@@ -1,7 +1,7 @@
 // Every descriptor behind the PointDescriptor interface: one row per
 // keypoint with its documented width, including keypoints at the image
-// corners, and known values for the hand-written ones (EDD, opponent
-// channels).
+// corners, and known values for the opponent channels (EDD's values:
+// edd_descriptor_test.cpp).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -13,7 +13,6 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/util/error.hpp"
-#include "semantics/point_descriptors/edd_descriptor.hpp"
 #include "semantics/point_descriptors/keypoint_rows.hpp"
 #include "semantics/point_descriptors/orb_descriptor.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
@@ -166,55 +165,6 @@ TEST(KeypointRows, DroppedKeypointsBecomeZeroRows) {
   EXPECT_EQ(rows.at<float>(0, 1), 2.f);
   EXPECT_EQ(cv::norm(rows.row(1), cv::NORM_L1), 0.0);
   EXPECT_EQ(rows.at<float>(2, 0), 3.f);
-}
-
-// ---------------------------------------------------------------- EDD values
-
-TEST(EddDescriptor, FlatImageHasMeansPositionAndNoMoments) {
-  cv::Mat image(40, 50, CV_8UC3, cv::Scalar(51, 102, 204));  // BGR
-  EddDescriptor edd;
-  const cv::Mat row = edd.compute(image, {cv::Point2f(25, 10)});
-  ASSERT_EQ(row.cols, 113);
-  EXPECT_FLOAT_EQ(row.at<float>(0, 0), 25.f / 50.f);
-  EXPECT_FLOAT_EQ(row.at<float>(0, 1), 10.f / 40.f);
-  EXPECT_NEAR(row.at<float>(0, 2), 204.f / 255.f, 1e-5);  // R
-  EXPECT_NEAR(row.at<float>(0, 3), 102.f / 255.f, 1e-5);  // G
-  EXPECT_NEAR(row.at<float>(0, 4), 51.f / 255.f, 1e-5);   // B
-  EXPECT_NEAR(row.at<float>(0, 5), 0.75f, 0.01);           // S = (204 - 51) / 204
-  // Hue of (204, 102, 51) is 20 degrees.
-  EXPECT_NEAR(row.at<float>(0, 6), std::sin(20.0 * CV_PI / 180.0), 0.02);
-  EXPECT_NEAR(row.at<float>(0, 7), std::cos(20.0 * CV_PI / 180.0), 0.02);
-  for (int c = 8; c < 32; ++c) EXPECT_NEAR(row.at<float>(0, c), 0.f, 1e-3) << "moment column " << c;
-  // No edge anywhere: every distance is the image diagonal.
-  for (int c = 32; c < 113; ++c) EXPECT_NEAR(row.at<float>(0, c), std::hypot(50.0, 40.0), 1.0);
-}
-
-TEST(EddDescriptor, DistancesGrowAwayFromAnEdge) {
-  // A vertical step edge at x = 20.
-  cv::Mat image(40, 40, CV_8UC3, cv::Scalar::all(30));
-  image.colRange(20, 40).setTo(cv::Scalar::all(220));
-  EddDescriptor edd;
-  const cv::Mat row = edd.compute(image, {cv::Point2f(20, 20)});
-  // Distance columns are the 9 x 9 patch row by row: the centre row.
-  const float* centre_row = row.ptr<float>(0) + 32 + 4 * 9;
-  EXPECT_LE(std::min(centre_row[3], centre_row[4]), 0.5f) << "an edge pixel at the centre";
-  EXPECT_GT(centre_row[0], centre_row[3]);
-  EXPECT_GT(centre_row[8], centre_row[5]);
-}
-
-TEST(EddDescriptor, MomentsSeeAnAsymmetricPatch) {
-  // A dark column beside two grey ones in a bright patch: I_norm weighs only
-  // the darker pixels (weights 2 : 1 : 1 at x = 0, 1, 2 of the patch), a
-  // skewed distribution, so mu30 is clearly non-zero (22.8 by hand) while
-  // mu03 stays 0 (every row is the same).
-  cv::Mat image(30, 30, CV_8UC3, cv::Scalar::all(200));
-  image(cv::Rect(11, 0, 1, 30)).setTo(cv::Scalar::all(20));
-  image(cv::Rect(12, 0, 2, 30)).setTo(cv::Scalar::all(110));
-  EddDescriptor edd;
-  const cv::Mat row = edd.compute(image, {cv::Point2f(15, 15)});
-  const float mu30_r = row.at<float>(0, 8), mu03_r = row.at<float>(0, 11);
-  EXPECT_NEAR(mu30_r, 22.78f, 0.05f);
-  EXPECT_NEAR(mu03_r, 0.f, 1e-3);
 }
 
 }  // namespace
