@@ -90,9 +90,12 @@ FACADESLAM_KERNEL void magnitudes(const cv::Mat& dx, const cv::Mat& dy, cv::Mat&
 // before, >= after); then the thresholds. Branch-free over 8 pixels.
 // Strong maxima are collected as the seeds of the tracing.
 FACADESLAM_KERNEL void suppress_non_maxima(const cv::Mat& dx, const cv::Mat& dy, const cv::Mat& magnitude, int low,
-                                           int high, cv::Mat& map, std::vector<uchar*>& seeds) {
+                                           int high, cv::Mat& map, std::vector<uchar*>& seeds,
+                                           std::vector<uchar*>& row_buffer) {
   using ByteLanes = unsigned char __attribute__((vector_size(kLanes)));
   const auto load_ints = [](IntLanes& v, const int* p) { std::memcpy(&v, p, sizeof v); };
+  row_buffer.resize(static_cast<std::size_t>(dx.cols));
+  uchar** const row_seeds = row_buffer.data();
   for (int y = 0; y < dx.rows; ++y) {
     const short* gx = dx.ptr<short>(y);
     const short* gy = dy.ptr<short>(y);
@@ -100,6 +103,7 @@ FACADESLAM_KERNEL void suppress_non_maxima(const cv::Mat& dx, const cv::Mat& dy,
     const int* here = magnitude.ptr<int>(y + 1) + 1;
     const int* below = magnitude.ptr<int>(y + 2) + 1;
     uchar* out = map.ptr<uchar>(y + 1) + 1;
+    std::size_t row_count = 0;
     int x = 0;
     for (; x + kLanes <= dx.cols; x += kLanes) {
       using ShortLanes = short __attribute__((vector_size(kLanes * sizeof(short))));
@@ -131,14 +135,14 @@ FACADESLAM_KERNEL void suppress_non_maxima(const cv::Mat& dx, const cv::Mat& dy,
       const IntLanes value = maximum ? ((m > high) ? IntLanes{} + kEdge : IntLanes{} + kWeak) : IntLanes{} + kNone;
       const ByteLanes bytes = __builtin_convertvector(value, ByteLanes);
       std::memcpy(out + x, &bytes, sizeof bytes);
-      std::uint64_t strong;  // one byte per lane, 0xff where an edge
-      const ByteLanes is_edge = bytes == kEdge;
-      std::memcpy(&strong, &is_edge, sizeof strong);
-      // Only the edge lanes, lowest first, one bit per lane byte (a loop
-      // over all lanes wherever one is an edge mispredicted and cost as much
-      // as the rest of the suppression).
-      for (strong &= 0x0101010101010101ull; strong; strong &= strong - 1)
-        seeds.push_back(out + x + __builtin_ctzll(strong) / 8);
+      // Every lane is written to the row's seed list and the count grows by
+      // the edge lanes only: no branch on the data (a loop over the edge
+      // lanes mispredicted on every block that had one).
+      const ByteLanes is_edge = (bytes == kEdge) & 1;
+      for (int lane = 0; lane < kLanes; ++lane) {
+        row_seeds[row_count] = out + x + lane;
+        row_count += is_edge[lane];
+      }
     }
     for (; x < dx.cols; ++x) {
       const int xs = gx[x], ys = gy[x], m = here[x];
@@ -152,8 +156,9 @@ FACADESLAM_KERNEL void suppress_non_maxima(const cv::Mat& dx, const cv::Mat& dy,
         else maximum = m > above[x + 1] && m > below[x - 1];
       }
       out[x] = maximum ? (m > high ? kEdge : kWeak) : kNone;
-      if (out[x] == kEdge) seeds.push_back(out + x);
+      if (out[x] == kEdge) row_seeds[row_count++] = out + x;
     }
+    seeds.insert(seeds.end(), row_seeds, row_seeds + row_count);
   }
 }
 
@@ -196,7 +201,7 @@ void canny_edges(const cv::Mat& grey, int aperture, double low, double high, cv:
   b.map.create(grey.rows + 2, grey.cols + 2, CV_8U);
   b.map.setTo(kNone);  // the border: never an edge
   b.stack.clear();
-  suppress_non_maxima(b.dx, b.dy, b.magnitude, low_threshold, high_threshold, b.map, b.stack);
+  suppress_non_maxima(b.dx, b.dy, b.magnitude, low_threshold, high_threshold, b.map, b.stack, b.row_seeds);
   trace_edges(b.map, b.stack);
   edges.create(grey.size(), CV_8U);
   for (int y = 0; y < grey.rows; ++y) edge_bytes(b.map.ptr<uchar>(y + 1) + 1, edges.ptr<uchar>(y), grey.cols);

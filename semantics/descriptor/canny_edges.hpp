@@ -14,7 +14,7 @@ namespace facadeslam::semantics {
 
 struct CannyBuffers {
   cv::Mat padded, smooth, derivative, dx, dy, magnitude, map;
-  std::vector<uchar*> stack;
+  std::vector<uchar*> stack, row_seeds;
 };
 
 // `grey`: CV_8U. `edges`: CV_8U, 255 on edges. aperture 3 or 5.
