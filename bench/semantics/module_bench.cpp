@@ -9,7 +9,10 @@
 //    for those values (what the per-image planes cost), per keypoint too.
 //  - BM_SingularValuesUpTo/<k>: sigma1..sigma_k of all three channels (the
 //    module's cost depends on the highest active value of each channel).
-//  - BM_ThesisGenome: prepare() + extract() of the 93-value thesis genome.
+//  - BM_ThesisGenome: prepare() + extract() of the 93-value thesis genome;
+//    BM_ThesisGenomePrepareOnly its prepare() alone (sift_over_this: the
+//    ratio the genome could reach if its modules cost nothing), and
+//    BM_OpenCvPreparation the same steps with OpenCV's functions.
 //  - BM_SiftSparse / BM_ThesisGenomeSparse: the same pair on the 300
 //    strongest FAST corners, a keyframe's worth (the semantic worker's case;
 //    prepare() dominates there).
@@ -237,6 +240,53 @@ void BM_ThesisGenomeWithoutSingularValues(benchmark::State& state) {
   if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / per_image;
 }
 BENCHMARK(BM_ThesisGenomeWithoutSingularValues)->Unit(benchmark::kMillisecond);
+
+// The thesis genome's per-image preparation alone (its 14 planes):
+// sift_over_this bounds the genome's ratio from above, as if every module
+// were free.
+void BM_ThesisGenomePrepareOnly(benchmark::State& state) {
+  const DescriptorParams p = Genome::thesis_best().decode();
+  PreparedImage prepared = prepare(frame(), p);
+  const double per_image = seconds_per_image(state, grid_keypoints().size(), [&] {
+    prepare(frame(), p, prepared);
+    benchmark::DoNotOptimize(prepared.planes[0].data);
+  });
+  if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / per_image;
+}
+BENCHMARK(BM_ThesisGenomePrepareOnly)->Unit(benchmark::kMillisecond);
+
+// For reference, the same preparation steps done with OpenCV's own
+// functions (equalisation of Y, 7 x 7 blur, XYZ, Canny 5 x 5 with the exact
+// distance transform, Sobel and cv::phase of the three channels), without
+// the colour invariants: what preparation costs without hand-written passes.
+void BM_OpenCvPreparation(benchmark::State& state) {
+  const DescriptorParams p = Genome::thesis_best().decode();
+  cv::Mat ycrcb, equalised, blurred, unit, xyz, grey, edges, not_edges, distance, dx, dy, angle;
+  std::vector<cv::Mat> channels;
+  const double per_image = seconds_per_image(state, grid_keypoints().size(), [&] {
+    cv::cvtColor(frame(), ycrcb, cv::COLOR_BGR2YCrCb);
+    cv::split(ycrcb, channels);
+    cv::equalizeHist(channels[0], channels[0]);
+    cv::merge(channels, ycrcb);
+    cv::cvtColor(ycrcb, equalised, cv::COLOR_YCrCb2BGR);
+    cv::GaussianBlur(equalised, blurred, {p.gaussian_kernel, p.gaussian_kernel}, p.gaussian_sigma);
+    blurred.convertTo(unit, CV_32F, 1.0 / 255.0);
+    cv::cvtColor(unit, xyz, cv::COLOR_BGR2XYZ);
+    cv::cvtColor(blurred, grey, cv::COLOR_BGR2GRAY);
+    cv::Canny(grey, edges, p.canny_low_threshold, p.canny_high_threshold(), p.canny_kernel);
+    cv::compare(edges, 0, not_edges, cv::CMP_EQ);
+    cv::distanceTransform(not_edges, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    cv::split(xyz, channels);
+    for (const cv::Mat& c : channels) {
+      cv::Sobel(c, dx, CV_32F, 1, 0);
+      cv::Sobel(c, dy, CV_32F, 0, 1);
+      cv::phase(dx, dy, angle);
+    }
+    benchmark::DoNotOptimize(angle.data);
+  });
+  if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / per_image;
+}
+BENCHMARK(BM_OpenCvPreparation)->Unit(benchmark::kMillisecond);
 
 void BM_ThesisGenomeExtractOnly(benchmark::State& state) {
   run_genome(state, Genome::thesis_best().decode(), grid_keypoints(), false);
