@@ -21,6 +21,15 @@
 //    (edge_distance.hpp);
 //  - near the image edge the patch continues the image by reflection
 //    (BORDER_REFLECT_101), as the modular descriptor does.
+// How it is computed (the thesis times EDD at 26x faster than Opponent
+// SIFT; bench_semantics_modules reports opponent_sift_over_edd): each
+// channel is a function of one byte, so the planes come from tables built
+// through the same conversions; the eight channels (R G B H S V sin cos)
+// are interleaved per pixel, so a patch's maxima and raw moments
+// sum x^p y^q v (p + q <= 3, double) are vector sums over its 81 pixels;
+// the weighted central moments follow from those sums algebraically.
+// edd_descriptor_test.cpp checks every value against the definition
+// computed pixel by pixel.
 #include <memory>
 
 #include "semantics/point_descriptors/point_descriptor.hpp"

@@ -116,6 +116,31 @@ TEST(EddDescriptor, EveryValueMatchesTheDefinition) {
   EXPECT_GT(moments_checked, 200) << "the image must give the moments something to measure";
 }
 
+TEST(EddDescriptor, KeptBuffersFollowTheImageSize) {
+  // The planes are kept between calls: a second image of another size must
+  // get the same rows as a fresh descriptor gives it.
+  const cv::Mat large = test_util::textured_image(cv::Size(90, 70), 4);
+  const cv::Mat small = test_util::textured_image(cv::Size(33, 21), 5);
+  const std::vector<cv::Point2f> keypoints = {{0, 0}, {16, 10}, {32, 20}};
+  EddDescriptor reused;
+  reused.compute(large, {cv::Point2f(45, 35)});
+  const cv::Mat again = reused.compute(small, keypoints);
+  EXPECT_EQ(cv::norm(again, EddDescriptor().compute(small, keypoints), cv::NORM_INF), 0.0);
+}
+
+TEST(EddDescriptor, ImagesSmallerThanThePatch) {
+  // Reflection repeats the image as often as the 9 x 9 patch needs.
+  for (const cv::Size size : {cv::Size(1, 1), cv::Size(3, 2), cv::Size(2, 7)}) {
+    const cv::Mat image = test_util::textured_image(size, 6);
+    EddDescriptor edd;
+    const cv::Mat row = edd.compute(image, {cv::Point2f(0, 0)});
+    ASSERT_EQ(row.cols, EddDescriptor::kWidth);
+    EXPECT_TRUE(cv::checkRange(row)) << size;
+    const auto expected = reference_edd(image, cv::Point2f(0, 0));
+    for (int c = 2; c < 8; ++c) EXPECT_NEAR(row.at<float>(0, c), expected[static_cast<std::size_t>(c)], 1e-6) << size;
+  }
+}
+
 TEST(EddDescriptor, FlatImageHasMeansPositionAndNoMoments) {
   cv::Mat image(40, 50, CV_8UC3, cv::Scalar(51, 102, 204));  // BGR
   EddDescriptor edd;
