@@ -241,6 +241,18 @@ void BM_ThesisGenomeWithoutSingularValues(benchmark::State& state) {
 }
 BENCHMARK(BM_ThesisGenomeWithoutSingularValues)->Unit(benchmark::kMillisecond);
 
+// The same without the three modules that cost most per image (singular
+// values, edge distance and gradient angles: 29 of the 93 values, and the
+// Canny/distance and angle planes): still short of 10x.
+void BM_ThesisGenomeWithoutCostliest(benchmark::State& state) {
+  DescriptorParams p = Genome::thesis_best().decode();
+  for (const Module m : {Module::singular_values, Module::edge_distance, Module::gradient_angles})
+    for (int i = 0; i < module_size(m); ++i) p.activation.reset(static_cast<std::size_t>(module_offset(m) + i));
+  const double per_image = run_genome(state, p, grid_keypoints());
+  if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / per_image;
+}
+BENCHMARK(BM_ThesisGenomeWithoutCostliest)->Unit(benchmark::kMillisecond);
+
 // The thesis genome's per-image preparation alone (its 14 planes):
 // sift_over_this bounds the genome's ratio from above, as if every module
 // were free.
