@@ -12,7 +12,9 @@
 //  - BM_ThesisGenome: prepare() + extract() of the 93-value thesis genome;
 //    BM_ThesisGenomePrepareOnly its prepare() alone (sift_over_this: the
 //    ratio the genome could reach if its modules cost nothing), and
-//    BM_OpenCvPreparation the same steps with OpenCV's functions.
+//    BM_OpenCvPreparation the same steps with OpenCV's functions;
+//    BM_ThesisGenomeWithoutSingularValues / ...WithoutCostliest the genome
+//    without its costliest modules (what a time-aware GA could gain).
 //  - BM_SiftSparse / BM_ThesisGenomeSparse: the same pair on the 300
 //    strongest FAST corners, a keyframe's worth (the semantic worker's case;
 //    prepare() dominates there).
@@ -36,6 +38,7 @@
 #include <benchmark/benchmark.h>
 
 #include <ctime>
+#include <initializer_list>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -232,10 +235,15 @@ BENCHMARK(BM_ThesisGenome)->Unit(benchmark::kMillisecond);
 
 // What the GA could gain: the thesis genome without its singular values
 // (the costliest module per value), same image and keypoints.
-void BM_ThesisGenomeWithoutSingularValues(benchmark::State& state) {
+DescriptorParams thesis_without(std::initializer_list<Module> modules) {
   DescriptorParams p = Genome::thesis_best().decode();
-  for (int i = 0; i < module_size(Module::singular_values); ++i)
-    p.activation.reset(static_cast<std::size_t>(module_offset(Module::singular_values) + i));
+  for (const Module m : modules)
+    for (int i = 0; i < module_size(m); ++i) p.activation.reset(static_cast<std::size_t>(module_offset(m) + i));
+  return p;
+}
+
+void BM_ThesisGenomeWithoutSingularValues(benchmark::State& state) {
+  const DescriptorParams p = thesis_without({Module::singular_values});
   const double per_image = run_genome(state, p, grid_keypoints());
   if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / per_image;
 }
@@ -245,9 +253,7 @@ BENCHMARK(BM_ThesisGenomeWithoutSingularValues)->Unit(benchmark::kMillisecond);
 // values, edge distance and gradient angles: 29 of the 93 values, and the
 // Canny/distance and angle planes): still short of 10x.
 void BM_ThesisGenomeWithoutCostliest(benchmark::State& state) {
-  DescriptorParams p = Genome::thesis_best().decode();
-  for (const Module m : {Module::singular_values, Module::edge_distance, Module::gradient_angles})
-    for (int i = 0; i < module_size(m); ++i) p.activation.reset(static_cast<std::size_t>(module_offset(m) + i));
+  const DescriptorParams p = thesis_without({Module::singular_values, Module::edge_distance, Module::gradient_angles});
   const double per_image = run_genome(state, p, grid_keypoints());
   if (g_sift_seconds > 0) state.counters["sift_over_this"] = g_sift_seconds / per_image;
 }

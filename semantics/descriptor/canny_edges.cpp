@@ -94,6 +94,8 @@ FACADESLAM_KERNEL void suppress_non_maxima(const cv::Mat& dx, const cv::Mat& dy,
                                            std::vector<uchar*>& row_buffer) {
   using ByteLanes = unsigned char __attribute__((vector_size(kLanes)));
   const auto load_ints = [](IntLanes& v, const int* p) { std::memcpy(&v, p, sizeof v); };
+  // One row is enough: at the start of a block the row has at most x seeds,
+  // so the block writes below x + kLanes <= cols.
   row_buffer.resize(static_cast<std::size_t>(dx.cols));
   uchar** const row_seeds = row_buffer.data();
   for (int y = 0; y < dx.rows; ++y) {

@@ -52,6 +52,9 @@ int opencv_code(ColourSpace space) {
   CV_Error(cv::Error::StsBadArg, "colour space has no 8-bit OpenCV conversion here");
 }
 
+// A non-linear space's 8-bit channel as floats (into an existing CV_32F matrix).
+void scale_bytes(const cv::Mat& bytes, cv::Mat& out) { bytes.convertTo(out, CV_32F, 1.0 / 255.0); }
+
 FACADESLAM_KERNEL
 void linear_channel(const BgrPlanes& in, const LinearRow& w, cv::Mat& out) {
   for (int y = 0; y < out.rows; ++y) {
@@ -76,12 +79,28 @@ void convert_colour(const cv::Mat& bgr, const BgrPlanes& planes, ColourSpace spa
     return;
   }
   cv::Mat converted;
-  cv::cvtColor(bgr, converted, opencv_code(space));
+  convert_colour_bytes(bgr, space, converted);
   std::vector<cv::Mat> channels;
   cv::split(converted, channels);
   for (int c = 0; c < 3; ++c)
-    if (outputs[static_cast<std::size_t>(c)])
-      channels[static_cast<std::size_t>(c)].convertTo(*outputs[static_cast<std::size_t>(c)], CV_32F, 1.0 / 255.0);
+    if (outputs[static_cast<std::size_t>(c)]) scale_bytes(channels[static_cast<std::size_t>(c)], *outputs[static_cast<std::size_t>(c)]);
+}
+
+void convert_colour_bytes(const cv::Mat& bgr, ColourSpace space, cv::Mat& bytes) {
+  CV_Assert(bgr.type() == CV_8UC3);
+  cv::cvtColor(bgr, bytes, opencv_code(space));
+}
+
+const std::array<float, 256>& byte_values() {
+  static const std::array<float, 256> values = [] {
+    cv::Mat bytes(1, 256, CV_8U), scaled(1, 256, CV_32F);
+    for (int k = 0; k < 256; ++k) bytes.at<uchar>(0, k) = static_cast<uchar>(k);
+    scale_bytes(bytes, scaled);
+    std::array<float, 256> v{};
+    for (std::size_t k = 0; k < v.size(); ++k) v[k] = scaled.at<float>(0, static_cast<int>(k));
+    return v;
+  }();
+  return values;
 }
 
 void convert_colour(const cv::Mat& bgr, ColourSpace space, const std::array<cv::Mat*, 3>& outputs) {

@@ -13,7 +13,8 @@
 //                full 0..255 hue range) divided by 255:
 //                Lab: L/100, (a+128)/255, (b+128)/255;
 //                Luv: L/100, (u+134)/354, (v+140)/262;
-//                HSV: H/360, S, V;  HLS: H/360, L, S.
+//                HSV: H, S, V;  HLS: H, L, S, where H is OpenCV's
+//                full-range hue byte (256 per turn) / 255, i.e. ~hue / 360.
 // (Linear maps may leave a float rounding error of ~1e-7 outside [0, 1].)
 #include <array>
 
@@ -37,6 +38,14 @@ void convert_colour(const cv::Mat& bgr, const BgrPlanes& planes, ColourSpace spa
 
 // Convenience for tools and tests: splits `bgr` itself.
 void convert_colour(const cv::Mat& bgr, ColourSpace space, const std::array<cv::Mat*, 3>& outputs);
+
+// The non-linear spaces (Lab, Luv, HSV, HLS) are OpenCV's 8-bit conversion
+// of `bgr` (CV_8UC3, into `bytes`) with each byte then scaled to a float:
+// byte_values()[k] is the float convert_colour makes of byte k. Callers
+// that need these channels as tables (EDD) use the two so that they cannot
+// drift from convert_colour.
+void convert_colour_bytes(const cv::Mat& bgr, ColourSpace space, cv::Mat& bytes);
+const std::array<float, 256>& byte_values();
 
 // Channel names of a colour space ("X", "Y", "Z"; "O1", "O2", "O3"; ...).
 std::array<const char*, 3> channel_names(ColourSpace space);

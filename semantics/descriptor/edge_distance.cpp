@@ -33,28 +33,14 @@ FACADESLAM_KERNEL void column_distances(const cv::Mat& edges, cv::Mat& g) {
   }
 }
 
-// Exact distances along a row from the column distances g:
-// d(x)^2 = min over q of (x - q)^2 + g(q)^2. Every value is an integer below
-// 2^24, so float arithmetic is exact. Each block of 8 pixels widens its
-// search k = 1, 2, ... until k^2 reaches the largest squared distance it has
-// found (no farther column can be closer): dense Canny edges keep k small,
-// and the cost follows the distances. Same result as a lower envelope of
-// parabolas (Felzenszwalb & Huttenlocher) without its data-dependent
-// branches. A step past the bound cannot change a lane (its candidates are
-// >= k^2 >= the lane's best), so steps may be taken past it:
-//  - pass 1 takes the first kFirstSteps steps of every block unconditionally
-//    and lists the blocks whose bound lies beyond (no branch per block: the
-//    stop test's outcome varies from block to block and mispredicted);
-//  - pass 2 continues the listed blocks, testing the bound (a maximum across
-//    the lanes, a serial chain) every kStepsPerTest steps;
-//  - pass 3 takes the square roots.
-// `squares` holds g^2 with `width` columns of kFar^2 on both sides, then the
-// best squared distances and the list of unfinished blocks.
+// Per-row buffers of row_distances.
 struct RowScratch {
-  std::vector<float> squares, best;
-  std::vector<int> unfinished;
+  std::vector<float> squares;  // g^2, with `width` columns of kFar^2 on both sides
+  std::vector<float> best;     // the best squared distance found so far, per pixel
+  std::vector<int> unfinished;  // first pixels of the blocks pass 1 left unfinished
 };
 
+// Steps k = first..last of a block's outward search (see row_distances).
 [[gnu::always_inline]] inline void search_steps(const float* sq, int x, int first, int last, FloatLanes& best) {
   for (int k = first; k <= last; ++k) {
     const float reach = static_cast<float>(k) * static_cast<float>(k);
@@ -72,6 +58,22 @@ struct RowScratch {
   return worst;
 }
 
+// Exact distances along a row from the column distances g:
+// d(x)^2 = min over q of (x - q)^2 + g(q)^2. Every value is an integer below
+// 2^24 (images with a diagonal under ~2900 pixels), so float arithmetic is
+// exact. Each block of 8 pixels widens its search k = 1, 2, ... until k^2
+// reaches the largest squared distance it has found (no farther column can
+// be closer): dense Canny edges keep k small, and the cost follows the
+// distances. Same result as a lower envelope of parabolas (Felzenszwalb &
+// Huttenlocher) without its data-dependent branches. A step past the bound
+// cannot change a lane (its candidates are >= k^2 >= the lane's best), so
+// steps may be taken past it:
+//  - pass 1 takes the first kFirstSteps steps of every block unconditionally
+//    and lists the blocks whose bound lies beyond (no branch per block: the
+//    stop test's outcome varies from block to block and mispredicted);
+//  - pass 2 continues the listed blocks, testing the bound (a maximum across
+//    the lanes, a serial chain) every kStepsPerTest steps;
+//  - pass 3 takes the square roots.
 FACADESLAM_KERNEL void row_distances(const float* g, int width, float* out, RowScratch& scratch) {
   const int blocks = (width + kLanes - 1) / kLanes;
   scratch.squares.assign(static_cast<std::size_t>(3 * width + kLanes), kFar * kFar);

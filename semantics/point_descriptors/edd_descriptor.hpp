@@ -7,7 +7,8 @@
 //             means of sin(hue) and cos(hue) (hue as an angle, so that
 //             red at 0 and 359 degrees agree);
 //   [8, 32)   third-order central moments mu30 mu21 mu12 mu03 of each of
-//             R, G, B, H, S, V (H as hue / 360), in that channel order;
+//             R, G, B, H, S, V (H as in colour_conversion.hpp, ~hue / 360),
+//             in that channel order;
 //   [32, 113) the distance (pixels) of each of the 81 patch pixels, row by
 //             row, to the nearest Canny edge of the grey image.
 // Choices where the text is silent or inconsistent:
@@ -25,10 +26,9 @@
 // SIFT; bench_semantics_modules reports opponent_sift_over_edd): each
 // channel is a function of one byte, so the planes come from tables built
 // through the same conversions; the eight channels (R G B H S V sin cos)
-// are interleaved per pixel, so a patch's maxima and raw moments
-// sum x^p y^q v (p + q <= 3, double) are vector sums over its 81 pixels;
-// the weighted central moments follow from those sums algebraically.
-// edd_descriptor_test.cpp checks every value against the definition
+// are interleaved per pixel, and edd_patch_moments.hpp takes a patch's
+// maxima and raw moments as vector sums, the weighted central moments from
+// those. edd_descriptor_test.cpp checks every value against the definition
 // computed pixel by pixel.
 #include <memory>
 

@@ -176,5 +176,25 @@ TEST(AffineInvariants, NeededOrders) {
   EXPECT_EQ(affine_invariant_order(10), 5);
 }
 
+TEST(CentralMomentsFromRaw, MatchADirectSumAboutTheCentroid) {
+  // Weighted points; raw moments about an arbitrary origin.
+  const double points[][3] = {{-3, 1, 0.5}, {2, 2, 2.0}, {0.5, -4, 1.0}, {4, -1, 0.25}, {1, 3, 3.0}};
+  double raw[kMaxMomentOrder + 1][kMaxMomentOrder + 1] = {};
+  double m00 = 0, mx = 0, my = 0;
+  for (const auto& [x, y, w] : points) {
+    for (int p = 0; p <= kMaxMomentOrder; ++p)
+      for (int q = 0; p + q <= kMaxMomentOrder; ++q) raw[p][q] += std::pow(x, p) * std::pow(y, q) * w;
+    m00 += w, mx += x * w, my += y * w;
+  }
+  double mu[kMaxMomentOrder + 1][kMaxMomentOrder + 1];
+  central_moments_from_raw(raw, kMaxMomentOrder, mu);
+  for (int p = 0; p <= kMaxMomentOrder; ++p)
+    for (int q = 0; p + q <= kMaxMomentOrder; ++q) {
+      double direct = 0;
+      for (const auto& [x, y, w] : points) direct += std::pow(x - mx / m00, p) * std::pow(y - my / m00, q) * w;
+      EXPECT_NEAR(mu[p][q], direct, 1e-9 * std::max(1.0, std::abs(direct))) << "mu" << p << q;
+    }
+}
+
 }  // namespace
 }  // namespace facadeslam::semantics

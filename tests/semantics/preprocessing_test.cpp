@@ -1,6 +1,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include <cmath>
 
 #include <opencv2/imgproc.hpp>
@@ -44,6 +46,21 @@ TEST(ColourConversion, EveryChannelIsANonNegativeIntensity) {
       EXPECT_GE(lo, -1e-6) << colour_space_name(space) << " channel " << c;
       EXPECT_LE(hi, (space == ColourSpace::xyz ? 1.09 : 1.0) + 1e-6) << colour_space_name(space) << " channel " << c;
     }
+  }
+}
+
+TEST(ColourConversion, ByteTablesGiveTheSameFloats) {
+  // Wider than a vector block, so OpenCV's vector and scalar paths both run.
+  const cv::Mat image = test_util::textured_image({97, 13}, 8);
+  for (const ColourSpace space : {ColourSpace::lab, ColourSpace::luv, ColourSpace::hsv, ColourSpace::hls}) {
+    const auto planes = converted(image, space);
+    cv::Mat bytes;
+    convert_colour_bytes(image, space, bytes);
+    for (int y = 0; y < image.rows; ++y)
+      for (int x = 0; x < image.cols; ++x)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_EQ(planes[static_cast<std::size_t>(c)].at<float>(y, x), byte_values()[bytes.at<cv::Vec3b>(y, x)[c]])
+              << colour_space_name(space) << " channel " << c << " at " << x << ", " << y;
   }
 }
 
@@ -271,6 +288,30 @@ TEST(EdgeDistance, MatchesOpenCvExactTransform) {
   distance_to_edges(edges, ours);
   cv::distanceTransform(edges == 0, reference, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
   EXPECT_LT(cv::norm(ours, reference, cv::NORM_INF), 1e-3);
+}
+
+TEST(EdgeDistance, ExactForEveryWidthAndFarEdges) {
+  // Widths below, at and past a vector block (and below the 4 steps every
+  // block takes first), with one or two edge pixels, so that some blocks
+  // search to the far end of the row: the distances are the exact ones,
+  // bit for bit.
+  for (int width = 1; width <= 19; ++width)
+    for (const bool two : {false, true}) {
+      cv::Mat edges = cv::Mat::zeros(7, width, CV_8U);
+      edges.at<uchar>(1, 0) = 255;
+      if (two) edges.at<uchar>(6, width - 1) = 255;
+      cv::Mat ours(edges.size(), CV_32F);
+      distance_to_edges(edges, ours);
+      for (int y = 0; y < edges.rows; ++y)
+        for (int x = 0; x < width; ++x) {
+          int best = INT32_MAX;
+          for (int ey = 0; ey < edges.rows; ++ey)
+            for (int ex = 0; ex < width; ++ex)
+              if (edges.at<uchar>(ey, ex)) best = std::min(best, (x - ex) * (x - ex) + (y - ey) * (y - ey));
+          ASSERT_EQ(ours.at<float>(y, x), static_cast<float>(std::sqrt(static_cast<double>(best))))
+              << "width " << width << (two ? ", two edges" : ", one edge") << " at " << x << ", " << y;
+        }
+    }
 }
 
 }  // namespace

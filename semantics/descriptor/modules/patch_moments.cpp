@@ -241,4 +241,10 @@ void patch_moments_from_columns(const float* columns, int r, int order, PatchMom
   with_order(order, [&]<int Order>() __attribute__((always_inline)) { moments_of_columns<Order>(columns, r, out); });
 }
 
+void central_moments_from_raw(const double (*raw)[kMaxMomentOrder + 1], int order,
+                              double (*mu)[kMaxMomentOrder + 1]) {
+  const double cx = raw[1][0] / raw[0][0], cy = raw[0][1] / raw[0][0];
+  with_order(order, [&]<int Order>() __attribute__((always_inline)) { central_moments<Order>(raw, cx, cy, mu); });
+}
+
 }  // namespace facadeslam::semantics

@@ -43,4 +43,10 @@ inline constexpr int kMomentColumnStride = 8;
 void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count, float* columns);
 void patch_moments_from_columns(const float* columns, int r, int order, PatchMoments& out);
 
+// Central moments mu[p][q] (p + q <= order, 0..5) from raw moments
+// raw[p][q] = sum of x^p y^q w about any origin, for weights w of the
+// caller's own (EDD's normalised intensity); raw[0][0] must be positive.
+void central_moments_from_raw(const double (*raw)[kMaxMomentOrder + 1], int order,
+                              double (*mu)[kMaxMomentOrder + 1]);
+
 }  // namespace facadeslam::semantics
