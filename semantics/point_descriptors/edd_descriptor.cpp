@@ -18,6 +18,7 @@ namespace {
 static_assert(EddDescriptor::kRadius == kEddRadius);
 constexpr int kRadius = kEddRadius;
 constexpr int kSide = kEddSide;
+constexpr double kTwoPi = 6.283185307179586;
 
 // The eight channels, interleaved per pixel (edd_patch_moments.hpp).
 enum Channel { kR, kG, kB, kH, kS, kV, kSinH, kCosH, kChannels };
@@ -40,8 +41,8 @@ const ChannelTables& channel_tables() {
     convert_colour(ramp, ColourSpace::rgb, {&red, nullptr, nullptr});
     for (std::size_t k = 0; k < 256; ++k) {
       t.rgb[k] = red.at<float>(0, static_cast<int>(k));
-      t.sin_hue[k] = static_cast<float>(std::sin(6.283185307179586 * byte_values()[k]));
-      t.cos_hue[k] = static_cast<float>(std::cos(6.283185307179586 * byte_values()[k]));
+      t.sin_hue[k] = static_cast<float>(std::sin(kTwoPi * byte_values()[k]));
+      t.cos_hue[k] = static_cast<float>(std::cos(kTwoPi * byte_values()[k]));
     }
     return t;
   }();
