@@ -68,11 +68,11 @@ int run_replay(ReplayOptions o) {
   ReplayLog log;
   Progress progress("replay", source->size_hint());
   while (auto frame = source->next()) {
-    if (frame->image.cols != camera.width() || frame->image.rows != camera.height())
-      fail_file(frame->source, "image is " + std::to_string(frame->image.cols) + "x" + std::to_string(frame->image.rows) +
+    if (frame->colour.cols != camera.width() || frame->colour.rows != camera.height())
+      fail_file(frame->source, "image is " + std::to_string(frame->colour.cols) + "x" + std::to_string(frame->colour.rows) +
                                    " but the camera (" + o.camera.string() + ") is " + std::to_string(camera.width()) +
                                    "x" + std::to_string(camera.height()));
-    const FrameReport r = system.process(frame->index, frame->timestamp, frame->image);
+    const FrameReport r = system.process(std::move(*frame));
     log.add(r, system.initialised());
     progress.update(log.frames, to_string(r.status));
   }

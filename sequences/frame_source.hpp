@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sequences/frame.hpp"
+#include "core/image/frame.hpp"
 
 namespace facadeslam {
 

@@ -37,12 +37,12 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
   c.finish();
 }
 
-void read_mapmaker(const ConfigNode& c, MapMakerOptions& m) {
-  m.initialisation.min_median_parallax_deg =
-      c.get_double("init_min_parallax_deg", Range::positive(45), m.initialisation.min_median_parallax_deg);
+void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m) {
+  init.min_median_parallax_deg =
+      c.get_double("init_min_parallax_deg", Range::positive(45), init.min_median_parallax_deg);
   m.densify_initial_map_min_parallax_deg = c.get_double("init_densify_min_parallax_deg", Range::non_negative(180),
                                                          m.densify_initial_map_min_parallax_deg);
-  m.initialisation.min_points = c.get_int("init_min_points", Range::closed(8, 100000), m.initialisation.min_points);
+  init.min_points = c.get_int("init_min_points", Range::closed(8, 100000), init.min_points);
   m.local_ba_selection.neighbours = static_cast<std::size_t>(
       c.get_int("local_ba_neighbours", Range::closed(1, 100), static_cast<int>(m.local_ba_selection.neighbours)));
   m.local_ba.max_iterations = c.get_int("local_ba_iterations", Range::closed(1, 1000), m.local_ba.max_iterations);
@@ -65,7 +65,7 @@ SlamOptions load_slam_options(const std::filesystem::path& path) {
   SlamOptions options;
   const ConfigNode root = ConfigNode::load_file(path);
   if (const auto tracker = root.optional_child("tracker")) read_tracker(*tracker, options.tracker);
-  if (const auto mapmaker = root.optional_child("mapmaker")) read_mapmaker(*mapmaker, options.mapmaker);
+  if (const auto mapmaker = root.optional_child("mapmaker")) read_mapmaker(*mapmaker, options.initialisation, options.mapmaker);
   root.finish();
   return options;
 }

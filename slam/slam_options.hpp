@@ -3,12 +3,16 @@
 // optional, defaults are PTAM's; unknown keys and bad values are errors).
 #include <filesystem>
 
-#include "mapmaker/mapping/map_maker_options.hpp"
-#include "tracker/tracking/tracker_options.hpp"
+#include "mapmaker/map_maker_options.hpp"
+#include "slam/init/init_options.hpp"
+#include "tracker/tracker_options.hpp"
 
 namespace facadeslam {
 
 struct SlamOptions {
+  // Start-up's two-view initialisation; its keys live in the config's
+  // `mapmaker:` section (init_*), where PTAM users look for them.
+  TwoViewOptions initialisation;
   TrackerOptions tracker;
   MapMakerOptions mapmaker;
   // Synchronous mode: map maker work runs inline at each keyframe, so a run

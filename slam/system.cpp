@@ -1,20 +1,12 @@
 #include "slam/system.hpp"
 
-#include <chrono>
-
 #include <spdlog/spdlog.h>
 
 #include "core/map/map_io.hpp"
 #include "core/util/error.hpp"
-#include "tracker/reloc/small_blurry_image.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace facadeslam {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-}  // namespace
 
 const char* to_string(FrameStatus status) {
   switch (status) {
@@ -32,32 +24,43 @@ System::System(Camera camera, SlamOptions options)
       options_(std::move(options)),
       map_maker_(camera_, map_, queue_, options_.mapmaker),
       tracker_(camera_, map_, queue_, options_.tracker),
-      initialiser_(camera_, options_.mapmaker.initialisation) {}
+      initialiser_(camera_, options_.initialisation, map_maker_) {}
 
 System::~System() { map_maker_.stop(); }
 
-void System::load_map(const std::filesystem::path& path) {
-  facadeslam::load_map(path, map_, &camera_);
-  initialised_ = map_.keyframe_count() >= 2 && map_.point_count() > 0;
-  if (!initialised_) fail_file(path, "the map has no keyframes or points to track against");
-  // Nothing is known of the camera yet: the tracker starts lost and relocalises.
-  tracker_.start(map_.keyframes().back()->T_c_w(), 0);
-  tracker_.mark_lost();
+void System::start_tracking(const SE3d& T_c_w, std::size_t frame_index) {
+  initialised_ = true;
+  tracker_.start(T_c_w, frame_index);
   if (!options_.synchronous) map_maker_.start();
 }
 
-FrameReport System::process(std::size_t index, double timestamp, const cv::Mat& colour) {
-  const auto t0 = Clock::now();
+void System::load_map(const std::filesystem::path& path) {
+  facadeslam::load_map(path, map_, &camera_);
+  if (map_.keyframe_count() < 2 || map_.point_count() == 0)
+    fail_file(path, "the map has no keyframes or points to track against");
+  // Nothing is known of the camera yet: the tracker starts lost and relocalises.
+  start_tracking(map_.snapshot_keyframes().back().T_c_w, 0);
+  tracker_.mark_lost();
+}
+
+FrameReport System::process(Frame frame) {
+  const Stopwatch total;
   FrameReport report;
-  report.index = index;
-  report.timestamp = timestamp;
-  auto pyramid = std::make_shared<const ImagePyramid>(colour, options_.tracker.pyramid);
-  report.pyramid_ms = ms_since(t0);
+  report.index = frame.index;
+  report.timestamp = frame.timestamp;
+  frame.pyramid = std::make_shared<const ImagePyramid>(frame.colour, options_.tracker.pyramid);
+  report.pyramid_ms = total.elapsed_ms();
 
   if (!initialised_) {
-    report = initialise(index, timestamp, colour, pyramid, report);
+    report.status = FrameStatus::initialising;
+    if (const auto T_c_w = initialiser_.add_frame(frame)) {
+      start_tracking(*T_c_w, frame.index);
+      report.status = FrameStatus::initialised;
+      report.has_pose = true;
+      report.T_c_w = *T_c_w;
+    }
   } else {
-    report.tracking = tracker_.track({index, timestamp, colour, pyramid});
+    report.tracking = tracker_.track(frame);
     report.has_pose = report.tracking.tracked;
     report.T_c_w = report.tracking.T_c_w;
     report.status = !report.tracking.tracked     ? FrameStatus::lost
@@ -66,7 +69,7 @@ FrameReport System::process(std::size_t index, double timestamp, const cv::Mat& 
     if (options_.synchronous) map_maker_.process_pending();
     log_tracking(report);
   }
-  report.total_ms = ms_since(t0);
+  report.total_ms = total.elapsed_ms();
   return report;
 }
 
@@ -81,41 +84,6 @@ void System::log_tracking(const FrameReport& report) const {
       t.fine_searched, c.projected, c.template_invalid, c.no_candidate, c.score_too_high, c.subpixel_failed,
       c.outliers, t.inlier_rms_px, report.pyramid_ms, t.timings.coarse_ms, t.timings.fine_ms, t.timings.pose_ms,
       t.keyframe_requested ? ", keyframe requested" : "");
-}
-
-FrameReport System::initialise(std::size_t index, double timestamp, const cv::Mat& colour,
-                               std::shared_ptr<const ImagePyramid> pyramid, FrameReport report) {
-  report.status = FrameStatus::initialising;
-  const auto make_frame = [&] {
-    return MapMakerFrame{index, timestamp, pyramid, colour, make_small_blurry_image(*pyramid)};
-  };
-  if (!reference_) {
-    reference_ = make_frame();
-    initialiser_.reset(pyramid->level(0).image, pyramid->level(0).corners, timestamp);
-    return report;
-  }
-  const InitStatus status = initialiser_.add_frame(pyramid->level(0).image);
-  if (status == InitStatus::too_few_tracks) {
-    spdlog::debug("frame {}: initialisation restarts ({})", index, initialiser_.last_attempt().reason);
-    reference_ = make_frame();
-    initialiser_.reset(pyramid->level(0).image, pyramid->level(0).corners, timestamp);
-    return report;
-  }
-  if (status != InitStatus::success) return report;
-
-  const auto T_c_w = map_maker_.initialise(initialiser_.result(), *reference_, make_frame());
-  if (!T_c_w) {
-    reference_ = make_frame();
-    initialiser_.reset(pyramid->level(0).image, pyramid->level(0).corners, timestamp);
-    return report;
-  }
-  initialised_ = true;
-  tracker_.start(*T_c_w, index);
-  if (!options_.synchronous) map_maker_.start();
-  report.status = FrameStatus::initialised;
-  report.has_pose = true;
-  report.T_c_w = *T_c_w;
-  return report;
 }
 
 void System::finish() {

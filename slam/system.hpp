@@ -3,20 +3,20 @@
 // (run on the caller's thread, frame by frame), the map maker (its own thread,
 // or inline in synchronous mode) and, later, the semantic worker.
 //
-// Before a map exists the system initialises automatically: it tracks the
-// corners of a reference frame with the two-view initialiser until a frame
-// with enough parallax gives a reconstruction, which the map maker turns into
-// the first two keyframes.
-#include <memory>
-#include <optional>
+// Before a map exists the system starts up automatically (initialiser.hpp):
+// it tracks the corners of a reference frame until a frame with enough
+// parallax gives a reconstruction, which the map maker turns into the first
+// two keyframes.
+#include <filesystem>
 
 #include "core/camera/camera.hpp"
-#include "core/map/keyframe_queue.hpp"
+#include "core/image/frame.hpp"
+#include "core/map/keyframe_candidate.hpp"
 #include "core/map/map.hpp"
-#include "mapmaker/init/two_view_initialiser.hpp"
-#include "mapmaker/mapping/map_maker.hpp"
+#include "mapmaker/map_maker.hpp"
+#include "slam/initialiser.hpp"
 #include "slam/slam_options.hpp"
-#include "tracker/tracking/tracker.hpp"
+#include "tracker/tracker.hpp"
 
 namespace facadeslam {
 
@@ -43,20 +43,19 @@ class System {
   // frames relocalise against it.
   void load_map(const std::filesystem::path& path);
 
-  FrameReport process(std::size_t index, double timestamp, const cv::Mat& colour);
+  // Builds the frame's pyramid, then starts up or tracks it.
+  FrameReport process(Frame frame);
   // Waits for the map maker to finish queued work (threaded mode), then runs
   // a final global bundle adjustment in synchronous mode.
   void finish();
 
   bool initialised() const { return initialised_; }
   const Map& map() const { return map_; }
-  Map& map() { return map_; }
   const Camera& camera() const { return camera_; }
   MapMakerStats map_maker_stats() const { return map_maker_.stats(); }
 
  private:
-  FrameReport initialise(std::size_t index, double timestamp, const cv::Mat& colour,
-                         std::shared_ptr<const ImagePyramid> pyramid, FrameReport report);
+  void start_tracking(const SE3d& T_c_w, std::size_t frame_index);
   // One debug line per tracked frame: search outcomes, quality, stage times.
   void log_tracking(const FrameReport& report) const;
 
@@ -66,9 +65,8 @@ class System {
   KeyFrameQueue queue_;
   MapMaker map_maker_;
   Tracker tracker_;
-  TwoViewInitialiser initialiser_;
+  Initialiser initialiser_;
   bool initialised_ = false;
-  std::optional<MapMakerFrame> reference_;  // the initialiser's reference frame
 };
 
 }  // namespace facadeslam

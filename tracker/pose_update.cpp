@@ -8,7 +8,7 @@
 #include "core/image/image_pyramid.hpp"
 #include "core/util/error.hpp"
 
-namespace facadeslam::tracker {
+namespace facadeslam {
 namespace {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
@@ -187,4 +187,4 @@ PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement>
   return result;
 }
 
-}  // namespace facadeslam::tracker
+}  // namespace facadeslam

@@ -27,7 +27,7 @@
 #include "core/lie/se3.hpp"
 #include "tracker/tukey.hpp"
 
-namespace facadeslam::tracker {
+namespace facadeslam {
 
 struct PoseMeasurement {
   Eigen::Vector3d p_w{0, 0, 0};
@@ -68,4 +68,4 @@ Eigen::Matrix<double, 2, 6> pose_measurement_jacobian(const SE3d& T_c_w, const E
 PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement> measurements,
                              const Camera& camera, const PoseUpdateOptions& options = {});
 
-}  // namespace facadeslam::tracker
+}  // namespace facadeslam

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace facadeslam::tracker {
+namespace facadeslam {
 
 double robust_sigma_squared(std::span<double> squared_errors, double min_sigma_squared,
                             double median_to_sigma_squared) {
@@ -13,4 +13,4 @@ double robust_sigma_squared(std::span<double> squared_errors, double min_sigma_s
   return std::max(min_sigma_squared, median_to_sigma_squared * *middle);
 }
 
-}  // namespace facadeslam::tracker
+}  // namespace facadeslam

@@ -16,7 +16,7 @@
 // with c = 4.685 (95% efficiency under Gaussian noise).
 #include <span>
 
-namespace facadeslam::tracker {
+namespace facadeslam {
 
 inline constexpr double kTukeyC = 4.685;
 inline constexpr double kMedianToSigmaSquared2d = 0.72134752044448170;  // 1 / (2 ln 2)
@@ -33,4 +33,4 @@ inline double tukey_weight(double squared_error, double squared_cut) {
   return u * u;
 }
 
-}  // namespace facadeslam::tracker
+}  // namespace facadeslam

@@ -1,7 +1,5 @@
 #include "apps/replay/replay_outputs.hpp"
 
-#include <shared_mutex>
-
 #include "core/map/map_io.hpp"
 #include "core/map/point_cloud_writer.hpp"
 #include "core/trajectory/metrics.hpp"
@@ -13,9 +11,8 @@ namespace {
 
 Trajectory keyframe_trajectory(const Map& map) {
   Trajectory keyframes;
-  const auto kfs = map.keyframes();
-  std::shared_lock lock(map.mutex());
-  for (const auto& kf : kfs) keyframes.push_back({kf->timestamp(), kf->T_c_w().inverse().isometry()});
+  for (const KeyFrameSnapshot& kf : map.snapshot_keyframes())
+    keyframes.push_back({kf.keyframe->timestamp(), kf.T_c_w.inverse().isometry()});
   return keyframes;
 }
 

@@ -27,7 +27,7 @@
 #include "mapmaker/ba/ba_selection.hpp"
 #include "mapmaker/ba/bundle_adjuster.hpp"
 #include "mapmaker/ba/reprojection_cost.hpp"
-#include "mapmaker/ba/synthetic_street.hpp"
+#include "tests/support/synthetic_street.hpp"
 
 namespace {
 

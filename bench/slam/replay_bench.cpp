@@ -55,7 +55,7 @@ void replay(benchmark::State& state, bool synchronous) {
     SlamOptions options;
     options.synchronous = synchronous;
     System system(d->camera, options);
-    for (const Frame& f : d->frames) tracked += system.process(f.index, f.timestamp, f.image).has_pose;
+    for (const Frame& f : d->frames) tracked += system.process(f).has_pose;
     system.finish();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * d->frames.size()));
@@ -74,7 +74,7 @@ void BM_PyramidOnly(benchmark::State& state) {
   }
   const PyramidOptions options = SlamOptions{}.tracker.pyramid;
   for (auto _ : state)
-    for (const Frame& f : d->frames) benchmark::DoNotOptimize(ImagePyramid(f.image, options));
+    for (const Frame& f : d->frames) benchmark::DoNotOptimize(ImagePyramid(f.colour, options));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * d->frames.size()));
 }
 

@@ -19,14 +19,14 @@
 #include "core/camera/camera.hpp"
 #include "core/image/image_pyramid.hpp"
 #include "core/map/map_point.hpp"
-#include "tracker/patch_search.hpp"
-#include "tracker/patch_warp.hpp"
+#include "core/patch/patch_search.hpp"
+#include "core/patch/patch_warp.hpp"
 #include "tracker/pose_update.hpp"
 
 namespace {
 
 using namespace facadeslam;
-using namespace facadeslam::tracker;
+using namespace facadeslam::patch;
 
 struct Point {
   PatchSource source;

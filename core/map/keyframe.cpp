@@ -1,14 +1,20 @@
 #include "core/map/keyframe.hpp"
 
+#include "core/image/small_blurry_image.hpp"
+#include "core/util/error.hpp"
+
 namespace facadeslam {
 
-KeyFrame::KeyFrame(Id id, double timestamp, const SE3d& T_c_w, std::shared_ptr<const ImagePyramid> pyramid,
-                   cv::Mat colour, cv::Mat small_blurred)
+KeyFrame::KeyFrame(Id id, const Frame& frame, const SE3d& T_c_w, Measurements measurements)
     : id_(id),
-      timestamp_(timestamp),
+      frame_index_(frame.index),
+      timestamp_(frame.timestamp),
       T_c_w_(T_c_w),
-      pyramid_(std::move(pyramid)),
-      colour_(std::move(colour)),
-      small_blurred_(std::move(small_blurred)) {}
+      pyramid_(frame.pyramid),
+      colour_(frame.colour),
+      small_blurred_(frame.pyramid ? make_small_blurry_image(*frame.pyramid) : cv::Mat()),
+      measurements_(std::move(measurements)) {
+  if (!pyramid_) throw Error("KeyFrame: frame " + std::to_string(frame.index) + " has no pyramid");
+}
 
 }  // namespace facadeslam

@@ -1,8 +1,38 @@
 #include "core/map/map.hpp"
 
-#include <mutex>
-
 namespace facadeslam {
+
+void NewPoints::append(NewPoints more) {
+  points.insert(points.end(), std::make_move_iterator(more.points.begin()), std::make_move_iterator(more.points.end()));
+  observations.insert(observations.end(), std::make_move_iterator(more.observations.begin()),
+                      std::make_move_iterator(more.observations.end()));
+}
+
+std::shared_ptr<KeyFrame> MapView::keyframe(KeyFrame::Id id) const {
+  const auto it = map_.keyframes_.find(id);
+  return it == map_.keyframes_.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<MapPoint> MapView::point(MapPoint::Id id) const {
+  const auto it = map_.points_.find(id);
+  return it == map_.points_.end() ? nullptr : it->second;
+}
+
+const std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>>& MapView::keyframes() const { return map_.keyframes_; }
+const std::map<MapPoint::Id, std::shared_ptr<MapPoint>>& MapView::points() const { return map_.points_; }
+
+void MapEditor::set_depth_stats(KeyFrame& keyframe, double mean, double sigma) {
+  keyframe.mean_depth_ = mean;
+  keyframe.depth_sigma_ = sigma;
+}
+
+void MapEditor::set_measurement(KeyFrame& keyframe, MapPoint::Id point, const Measurement& measurement) {
+  keyframe.measurements_[point] = measurement;
+}
+
+bool MapEditor::erase_measurement(KeyFrame& keyframe, MapPoint::Id point) {
+  return keyframe.measurements_.erase(point) > 0;
+}
 
 KeyFrame::Id Map::new_keyframe_id() { return next_keyframe_id_.fetch_add(1); }
 MapPoint::Id Map::new_point_id() { return next_point_id_.fetch_add(1); }
@@ -12,16 +42,12 @@ void Map::restore_next_ids(std::uint64_t keyframe, std::uint64_t point) {
   next_point_id_ = point;
 }
 
-void Map::add_keyframe(std::shared_ptr<KeyFrame> keyframe) { add({std::move(keyframe)}, {}); }
-
-void Map::add_point(std::shared_ptr<MapPoint> point) { add({}, {std::move(point)}); }
-
 void Map::add(const std::vector<std::shared_ptr<KeyFrame>>& keyframes,
-              const std::vector<std::shared_ptr<MapPoint>>& points) {
+              const std::vector<std::shared_ptr<MapPoint>>& points, const std::vector<Observation>& observations) {
   std::unique_lock lock(mutex_);
   for (const auto& kf : keyframes) keyframes_.emplace(kf->id(), kf);
   for (const auto& p : points) points_.emplace(p->id(), p);
-  ++version_;
+  for (const auto& o : observations) o.keyframe->measurements_[o.point] = o.measurement;
 }
 
 std::vector<std::shared_ptr<KeyFrame>> Map::keyframes() const {
@@ -40,6 +66,14 @@ std::vector<std::shared_ptr<MapPoint>> Map::points() const {
   return out;
 }
 
+std::vector<KeyFrameSnapshot> Map::snapshot_keyframes() const {
+  std::shared_lock lock(mutex_);
+  std::vector<KeyFrameSnapshot> out;
+  out.reserve(keyframes_.size());
+  for (const auto& [id, kf] : keyframes_) out.push_back({kf, kf->T_c_w(), kf->mean_depth(), kf->depth_sigma()});
+  return out;
+}
+
 std::vector<PointSnapshot> Map::snapshot_points() const {
   std::shared_lock lock(mutex_);
   std::vector<PointSnapshot> out;
@@ -50,23 +84,11 @@ std::vector<PointSnapshot> Map::snapshot_points() const {
 }
 
 std::shared_ptr<KeyFrame> Map::keyframe(KeyFrame::Id id) const {
-  std::shared_lock lock(mutex_);
-  return keyframe_locked(id);
+  return read([&](const MapView& map) { return map.keyframe(id); });
 }
 
 std::shared_ptr<MapPoint> Map::point(MapPoint::Id id) const {
-  std::shared_lock lock(mutex_);
-  return point_locked(id);
-}
-
-std::shared_ptr<KeyFrame> Map::keyframe_locked(KeyFrame::Id id) const {
-  const auto it = keyframes_.find(id);
-  return it == keyframes_.end() ? nullptr : it->second;
-}
-
-std::shared_ptr<MapPoint> Map::point_locked(MapPoint::Id id) const {
-  const auto it = points_.find(id);
-  return it == points_.end() ? nullptr : it->second;
+  return read([&](const MapView& map) { return map.point(id); });
 }
 
 std::size_t Map::keyframe_count() const {
@@ -90,7 +112,9 @@ std::vector<MapPoint::Id> Map::remove_bad_points() {
       ++it;
     }
   }
-  if (!removed.empty()) ++version_;
+  if (!removed.empty())
+    for (auto& [id, kf] : keyframes_)
+      for (const MapPoint::Id point : removed) kf->measurements_.erase(point);
   return removed;
 }
 
@@ -98,12 +122,6 @@ void Map::clear() {
   std::unique_lock lock(mutex_);
   keyframes_.clear();
   points_.clear();
-  ++version_;
-}
-
-std::uint64_t Map::version() const {
-  std::shared_lock lock(mutex_);
-  return version_;
 }
 
 }  // namespace facadeslam

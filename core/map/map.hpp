@@ -1,20 +1,26 @@
 #pragma once
-// The map shared by the tracker, the map maker and the semantic worker.
-//
-// Locking (one std::shared_mutex, held briefly):
-// - structure (which keyframes and points exist) and geometry (keyframe poses,
-//   point positions) change only under an exclusive lock, taken by the map
-//   maker for a few microseconds to publish a new keyframe, new points or
-//   bundle-adjustment results that it computed without the lock;
-// - readers take a shared lock just long enough to copy what they need
-//   (snapshot_points(), keyframes()), then work on the copy;
-// - objects are published fully built, so nobody ever sees a half-made one;
-// - semantic labels and tracker statistics are atomics in MapPoint and need
-//   no lock at all.
+// The map shared by the tracker, the map maker and the semantic worker. The
+// Map owns its locking (one std::shared_mutex, never held for long, never
+// visible outside):
+// - readers copy what they need under the shared lock and work on the copy:
+//   snapshot_points(), snapshot_keyframes(), keyframes(), points(); or visit
+//   the map under the shared lock with read(), for a consistent view of many
+//   objects (saving the map);
+// - what changes after publication (keyframe poses, depth statistics and
+//   measurements; point geometry and the bad flag) changes only through
+//   update(), under the exclusive lock, and only through its MapEditor: the
+//   setters are private to it. update() and add() need a non-const Map, which
+//   only the map maker holds once the threads run (the tracker and the
+//   semantic worker get a const Map&). The map maker may read what it alone
+//   writes without a lock;
+// - objects are published fully built (add()), so nobody sees a half-made one;
+// - semantic labels and the tracker's search counts are atomics in MapPoint
+//   and need no lock at all.
 #include <atomic>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <shared_mutex>
 #include <vector>
 
@@ -29,50 +35,113 @@ struct PointSnapshot {
   PointGeometry geometry;
 };
 
+// A keyframe with a copy of what the map maker may change, taken under the
+// map's lock.
+struct KeyFrameSnapshot {
+  std::shared_ptr<const KeyFrame> keyframe;
+  SE3d T_c_w;
+  double mean_depth = 1.0;
+  double depth_sigma = 0.0;
+  Eigen::Vector3d centre_w() const { return T_c_w.inverse().translation(); }
+  Eigen::Vector3d optical_axis_w() const { return facadeslam::optical_axis_w(T_c_w); }
+};
+
+// A measurement to record in a keyframe that may already be in the map.
+struct Observation {
+  std::shared_ptr<KeyFrame> keyframe;
+  MapPoint::Id point = 0;
+  Measurement measurement;
+};
+
+// New points and the measurements that made them, published together.
+struct NewPoints {
+  std::vector<std::shared_ptr<MapPoint>> points;
+  std::vector<Observation> observations;
+  void append(NewPoints more);
+};
+
+class Map;
+
+// The map as seen under its shared lock (Map::read); valid only inside the visit.
+class MapView {
+ public:
+  std::shared_ptr<KeyFrame> keyframe(KeyFrame::Id id) const;
+  std::shared_ptr<MapPoint> point(MapPoint::Id id) const;
+  const std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>>& keyframes() const;
+  const std::map<MapPoint::Id, std::shared_ptr<MapPoint>>& points() const;
+
+ protected:
+  friend class Map;
+  explicit MapView(const Map& map) : map_(map) {}
+  const Map& map_;
+};
+
+// The map under its exclusive lock (Map::update): the only way to change
+// what is already published.
+class MapEditor : public MapView {
+ public:
+  void set_pose(KeyFrame& keyframe, const SE3d& T_c_w) { keyframe.T_c_w_ = T_c_w; }
+  void set_depth_stats(KeyFrame& keyframe, double mean, double sigma);
+  void set_measurement(KeyFrame& keyframe, MapPoint::Id point, const Measurement& measurement);
+  // Returns whether there was one.
+  bool erase_measurement(KeyFrame& keyframe, MapPoint::Id point);
+  void set_geometry(MapPoint& point, const PointGeometry& geometry) { point.geometry_ = geometry; }
+  void mark_bad(MapPoint& point) { point.bad_.store(true, std::memory_order_release); }
+
+ private:
+  friend class Map;
+  explicit MapEditor(Map& map) : MapView(map) {}
+};
+
 class Map {
  public:
   Map() = default;
   Map(const Map&) = delete;
   Map& operator=(const Map&) = delete;
 
-  std::shared_mutex& mutex() const { return mutex_; }
-
   // Fresh ids, unique for the life of the map (also across save/load).
   KeyFrame::Id new_keyframe_id();
   MapPoint::Id new_point_id();
 
-  // Publish (exclusive lock inside).
-  void add_keyframe(std::shared_ptr<KeyFrame> keyframe);
-  void add_point(std::shared_ptr<MapPoint> point);
+  // Publishes new keyframes and points, and records the observations
+  // (which may be in keyframes already in the map), in one exclusive section.
   void add(const std::vector<std::shared_ptr<KeyFrame>>& keyframes,
-           const std::vector<std::shared_ptr<MapPoint>>& points);
+           const std::vector<std::shared_ptr<MapPoint>>& points, const std::vector<Observation>& observations = {});
+  void add(const NewPoints& points) { add({}, points.points, points.observations); }
+  void add_keyframe(std::shared_ptr<KeyFrame> keyframe) { add({std::move(keyframe)}, {}); }
+
+  // Visits the map under the shared lock: f(const MapView&). `f` must not
+  // call the Map itself (its functions lock too: a deadlock); use the view.
+  template <class F>
+  decltype(auto) read(F&& f) const {
+    std::shared_lock lock(mutex_);
+    return f(MapView(*this));
+  }
+  // Changes it under the exclusive lock: f(MapEditor&); the same rule.
+  template <class F>
+  decltype(auto) update(F&& f) {
+    std::unique_lock lock(mutex_);
+    MapEditor editor(*this);
+    return f(editor);
+  }
 
   // Copies under a shared lock, ordered by id.
   std::vector<std::shared_ptr<KeyFrame>> keyframes() const;
   std::vector<std::shared_ptr<MapPoint>> points() const;
+  std::vector<KeyFrameSnapshot> snapshot_keyframes() const;
   std::vector<PointSnapshot> snapshot_points() const;  // good points only
   std::shared_ptr<KeyFrame> keyframe(KeyFrame::Id id) const;
   std::shared_ptr<MapPoint> point(MapPoint::Id id) const;
 
-  // Lookups for a caller that already holds the lock (shared or exclusive).
-  std::shared_ptr<KeyFrame> keyframe_locked(KeyFrame::Id id) const;
-  std::shared_ptr<MapPoint> point_locked(MapPoint::Id id) const;
-
   std::size_t keyframe_count() const;
   std::size_t point_count() const;
 
-  // Removes points marked bad (exclusive lock) and returns their ids; the
-  // caller (map maker) drops their measurements from its keyframes.
+  // Removes the points marked bad and their measurements in every keyframe,
+  // in one exclusive section; returns their ids.
   std::vector<MapPoint::Id> remove_bad_points();
 
   // Empties the map (failed initialisation, reset after a long loss).
   void clear();
-
-  // Bumped at every change of structure or geometry, so a reader can tell
-  // whether its copy is stale without comparing contents.
-  std::uint64_t version() const;
-  // For writers that changed geometry under an exclusive lock they hold.
-  void bump_version_locked() { ++version_; }
 
   // Id counters, for map I/O: restored on load so ids stay unique.
   std::uint64_t next_keyframe_id_value() const { return next_keyframe_id_.load(); }
@@ -80,12 +149,13 @@ class Map {
   void restore_next_ids(std::uint64_t keyframe, std::uint64_t point);
 
  private:
+  friend class MapView;
+
   mutable std::shared_mutex mutex_;
   std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>> keyframes_;
   std::map<MapPoint::Id, std::shared_ptr<MapPoint>> points_;
   std::atomic<std::uint64_t> next_keyframe_id_{0};
   std::atomic<std::uint64_t> next_point_id_{0};
-  std::uint64_t version_ = 0;
 };
 
 }  // namespace facadeslam

@@ -2,8 +2,7 @@
 
 #include <cmath>
 #include <fstream>
-#include <mutex>
-#include <shared_mutex>
+#include <tuple>
 #include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
@@ -144,21 +143,18 @@ void save_map(const std::filesystem::path& path, const Map& map, const Camera& c
   out.put(static_cast<std::uint64_t>(map.next_keyframe_id_value()));
   out.put(static_cast<std::uint64_t>(map.next_point_id_value()));
 
-  const auto keyframes = map.keyframes();
-  const auto points = map.points();
-  {
-    // Geometry under the lock so poses and positions are from one moment.
-    std::shared_lock lock(map.mutex());
-    out.put(static_cast<std::uint32_t>(keyframes.size()));
-    for (const auto& kf : keyframes) {
+  // Under the shared lock: poses, positions and measurements from one moment.
+  map.read([&](const MapView& view) {
+    out.put(static_cast<std::uint32_t>(view.keyframes().size()));
+    for (const auto& [kf_id, kf] : view.keyframes()) {
       out.put(static_cast<std::uint64_t>(kf->id()));
+      out.put(static_cast<std::uint64_t>(kf->frame_index()));
       out.put(kf->timestamp());
       put_pose(out, kf->T_c_w());
       out.put(kf->mean_depth());
       out.put(kf->depth_sigma());
       put_pyramid(out, *kf->pyramid());
       put_colour(out, kf->colour());
-      out.put_mat(kf->small_blurred());
       out.put(static_cast<std::uint32_t>(kf->measurements().size()));
       for (const auto& [point_id, m] : kf->measurements()) {
         out.put(static_cast<std::uint64_t>(point_id));
@@ -168,8 +164,8 @@ void save_map(const std::filesystem::path& path, const Map& map, const Camera& c
         out.put(static_cast<std::uint8_t>(m.from_source));
       }
     }
-    out.put(static_cast<std::uint32_t>(points.size()));
-    for (const auto& p : points) {
+    out.put(static_cast<std::uint32_t>(view.points().size()));
+    for (const auto& [point_id, p] : view.points()) {
       out.put(static_cast<std::uint64_t>(p->id()));
       out.put(static_cast<std::uint64_t>(p->source().keyframe_id));
       out.put(static_cast<std::int32_t>(p->source().level));
@@ -185,7 +181,7 @@ void save_map(const std::filesystem::path& path, const Map& map, const Camera& c
       out.put(label.confidence);
       out.put(static_cast<std::uint8_t>(p->is_bad()));
     }
-  }
+  });
   const std::uint64_t checksum = fnv1a64(out.buffer().data(), out.buffer().size());
   out.put(checksum);
   write_text_atomically(path, out.buffer());
@@ -227,21 +223,21 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   const auto next_point = in.get<std::uint64_t>("id counters");
 
   std::vector<std::shared_ptr<KeyFrame>> keyframes;
+  std::vector<std::tuple<std::shared_ptr<KeyFrame>, double, double>> depth_stats;
   std::map<KeyFrame::Id, std::shared_ptr<const ImagePyramid>> pyramids;
   const auto n_kf = in.get<std::uint32_t>("keyframe count");
   for (std::uint32_t k = 0; k < n_kf; ++k) {
     const auto id = in.get<std::uint64_t>("keyframe id");
+    const auto frame_index = in.get<std::uint64_t>("keyframe frame index");
     const double timestamp = in.get<double>("keyframe timestamp");
     const SE3d T_c_w = get_pose(in);
     const double mean_depth = in.get<double>("depth stats");
     const double depth_sigma = in.get<double>("depth stats");
     auto pyramid = get_pyramid(in);
     cv::Mat colour = get_colour(in);
-    cv::Mat small = in.get_mat("small blurred image");
-    auto kf = std::make_shared<KeyFrame>(id, timestamp, T_c_w, pyramid, colour, small);
-    kf->set_depth_stats(mean_depth, depth_sigma);
     const auto n_meas = in.get<std::uint32_t>("measurement count");
     if (n_meas > in.remaining() / 29) in.corrupt("measurement count larger than the file");
+    Measurements measurements;
     for (std::uint32_t i = 0; i < n_meas; ++i) {
       const auto point_id = in.get<std::uint64_t>("measurement");
       Measurement m;
@@ -249,13 +245,16 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
       m.pixel.x() = in.get<double>("measurement");
       m.pixel.y() = in.get<double>("measurement");
       m.from_source = in.get<std::uint8_t>("measurement") != 0;
-      kf->measurements().emplace(point_id, m);
+      measurements.emplace(point_id, m);
     }
+    auto kf = std::make_shared<KeyFrame>(
+        id, Frame{static_cast<std::size_t>(frame_index), timestamp, colour, {}, pyramid}, T_c_w, std::move(measurements));
+    depth_stats.emplace_back(kf, mean_depth, depth_sigma);
     pyramids.emplace(id, pyramid);
     keyframes.push_back(std::move(kf));
   }
 
-  std::vector<std::shared_ptr<MapPoint>> points;
+  std::vector<std::shared_ptr<MapPoint>> points, bad;
   const auto n_points = in.get<std::uint32_t>("point count");
   for (std::uint32_t i = 0; i < n_points; ++i) {
     const auto id = in.get<std::uint64_t>("point id");
@@ -278,12 +277,16 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     label.label = in.get<std::uint8_t>("point label");
     label.confidence = in.get<float>("point label");
     point->set_label(label);
-    if (in.get<std::uint8_t>("point flags")) point->mark_bad();
+    if (in.get<std::uint8_t>("point flags")) bad.push_back(point);
     points.push_back(std::move(point));
   }
   if (in.remaining() != 8) in.corrupt("unexpected data after the points");
 
   map.add(keyframes, points);
+  map.update([&](MapEditor& edit) {
+    for (const auto& [kf, mean, sigma] : depth_stats) edit.set_depth_stats(*kf, mean, sigma);
+    for (const auto& p : bad) edit.mark_bad(*p);
+  });
   map.restore_next_ids(next_kf, next_point);
   return camera;
 }

@@ -1,15 +1,16 @@
 #pragma once
 // Map save/load in a versioned little-endian binary format:
 //   magic "FSLAMMAP", u32 format version, camera (model, size, parameters),
-//   id counters, keyframes (pose, depth stats, pyramid levels with their
-//   corners, colour image, small blurred image, measurements), points
-//   (source, geometry, label, flags), and a trailing FNV-1a checksum.
+//   id counters, keyframes (frame index, timestamp, pose, depth stats,
+//   pyramid levels with their corners, colour image, measurements), points
+//   (source, geometry, label, flags), and a trailing FNV-1a checksum. The
+//   small blurry images are rebuilt from the pyramids on load.
 // Loading checks the magic, the version, the checksum and that the map was
 // made with the camera of the current run; each failure is an Error naming
 // the file and what was expected.
 //
-// Saving reads keyframe measurements, which only the map maker thread edits:
-// call it from that thread or while the map maker is idle.
+// Saving reads the whole map under its shared lock (Map::read), so it sees
+// one consistent state even while the map maker runs.
 #include <filesystem>
 
 #include "core/camera/camera.hpp"
@@ -17,7 +18,7 @@
 
 namespace facadeslam {
 
-inline constexpr std::uint32_t kMapFormatVersion = 1;
+inline constexpr std::uint32_t kMapFormatVersion = 2;  // 2: frame index added, small blurry image rebuilt
 
 void save_map(const std::filesystem::path& path, const Map& map, const Camera& camera);
 

@@ -8,9 +8,11 @@
 // v3PixelDown_W, on a plane facing the source camera); they are refreshed
 // whenever bundle adjustment moves the point or its source keyframe.
 //
-// Threads: geometry is written by the map maker (creation, bundle adjustment)
-// and read by the tracker, both under the Map's lock (see map.hpp); the
-// semantic label is an atomic so the semantic worker never blocks the tracker.
+// Threads: the geometry and the bad flag belong to the Map: they change only
+// through Map::update (the map maker's bundle adjustment and outlier removal)
+// and other threads read the geometry from Map::snapshot_points or under
+// Map::read. The semantic label and the search counts are atomics: the
+// semantic worker and the tracker write them without blocking anyone.
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -54,19 +56,17 @@ class MapPoint {
   Id id() const { return id_; }
   const PatchSource& source() const { return source_; }
 
-  // Guarded by Map::mutex(): shared lock to read, exclusive lock to write.
+  // Owned by the Map (see above).
   const PointGeometry& geometry() const { return geometry_; }
   const Eigen::Vector3d& position() const { return geometry_.p_w; }
-  void set_geometry(const PointGeometry& geometry) { geometry_ = geometry; }
 
   // Lock-free; written by the semantic worker, read by the tracker and outputs.
   SemanticLabel label() const;
   void set_label(SemanticLabel label);
 
-  // Marked bad by the map maker; the tracker skips bad points and the map
-  // maker removes them at its next maintenance pass.
+  // Marked bad by the map maker (MapEditor::mark_bad); snapshots leave bad
+  // points out and Map::remove_bad_points removes them.
   bool is_bad() const { return bad_.load(std::memory_order_acquire); }
-  void mark_bad() { bad_.store(true, std::memory_order_release); }
 
   // Tracker statistics for outlier removal (PTAM: a point searched for often
   // and rarely found is discarded). Relaxed atomics: counts, not ordering.
@@ -78,6 +78,8 @@ class MapPoint {
   std::uint32_t times_found() const { return found_.load(std::memory_order_relaxed); }
 
  private:
+  friend class MapEditor;
+
   const Id id_;
   const PatchSource source_;
   PointGeometry geometry_;

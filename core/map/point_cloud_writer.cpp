@@ -2,7 +2,6 @@
 
 #include <cstring>
 #include <map>
-#include <shared_mutex>
 #include <sstream>
 
 #include "core/map/semantic_classes.hpp"
@@ -27,12 +26,8 @@ std::size_t write_labelled_point_cloud(const std::filesystem::path& ply_path, co
     SemanticLabel label;
   };
   std::vector<Vertex> vertices;
-  {
-    const auto points = map.points();
-    std::shared_lock lock(map.mutex());
-    for (const auto& p : points)
-      if (!p->is_bad()) vertices.push_back({p->position().cast<float>(), p->label()});
-  }
+  for (const PointSnapshot& p : map.snapshot_points())
+    vertices.push_back({p.geometry.p_w.cast<float>(), p.point->label()});
 
   std::ostringstream header;
   header << "ply\nformat binary_little_endian 1.0\ncomment facadeslam labelled map points\n";

@@ -12,18 +12,17 @@ bool Progress::terminal_attached() { return ::isatty(STDOUT_FILENO) && ::isatty(
 Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)),
       total_(total),
-      enabled_(terminal_attached() && current_verbosity() != Verbosity::quiet),
-      start_(std::chrono::steady_clock::now()),
-      last_draw_(start_ - std::chrono::seconds(1)) {}
+      enabled_(terminal_attached() && current_verbosity() != Verbosity::quiet) {}
 
 Progress::~Progress() { finish(); }
 
 void Progress::update(std::size_t done, const std::string& status) {
   done_ = done;
   if (!enabled_) return;
-  const auto now = std::chrono::steady_clock::now();
-  if (now - last_draw_ < std::chrono::milliseconds(100) && done_ < total_) return;
-  last_draw_ = now;
+  // At most ten redraws a second, and always the last one.
+  if (drawn_ && since_draw_.elapsed_ms() < 100 && done_ < total_) return;
+  drawn_ = true;
+  since_draw_.restart();
   draw(status);
 }
 
@@ -31,8 +30,7 @@ void Progress::draw(const std::string& status) {
   constexpr int kWidth = 30;
   const double fraction = total_ ? static_cast<double>(done_) / static_cast<double>(total_) : 1.0;
   const int filled = static_cast<int>(fraction * kWidth);
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = since_start_.elapsed_s();
   const double rate = elapsed > 0 ? static_cast<double>(done_) / elapsed : 0.0;
   std::fprintf(stderr, "\r%s [%s%s] %zu/%zu %.1f/s %s\x1b[K", label_.c_str(),
                std::string(static_cast<std::size_t>(filled), '#').c_str(),

@@ -3,9 +3,10 @@
 // draws only when both stdout and stderr are terminals and logging is not
 // quiet, so CI logs and pipes stay clean. Not thread-safe: drive it from the
 // thread that owns the loop.
-#include <chrono>
 #include <cstddef>
 #include <string>
+
+#include "core/util/stopwatch.hpp"
 
 namespace facadeslam {
 
@@ -31,8 +32,9 @@ class Progress {
   std::size_t done_ = 0;
   bool enabled_;
   bool finished_ = false;
-  std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point last_draw_;
+  Stopwatch since_start_;
+  Stopwatch since_draw_;
+  bool drawn_ = false;
 };
 
 }  // namespace facadeslam

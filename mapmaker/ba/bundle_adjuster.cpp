@@ -1,7 +1,6 @@
 #include "mapmaker/ba/bundle_adjuster.hpp"
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <type_traits>
@@ -18,6 +17,7 @@
 #include "core/util/error.hpp"
 #include "mapmaker/ba/centre_distance_manifold.hpp"
 #include "mapmaker/ba/reprojection_cost.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace facadeslam {
 namespace {
@@ -146,9 +146,6 @@ ceres::LinearSolverType choose_linear_solver(const BundleAdjusterOptions& option
                                                                                           : ceres::SPARSE_SCHUR;
 }
 
-double elapsed_ms(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace
 
@@ -164,7 +161,7 @@ BundleAdjuster::BundleAdjuster(BundleAdjusterOptions options) : options_(std::mo
 }
 
 BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   validate_ba_problem(problem);
 
   BaResult result;
@@ -176,7 +173,7 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
     result.final_rms_px = initial.rms_px;
     result.final_inlier_rms_px = initial.inlier_rms_px;
     result.outliers = initial.outliers;
-    result.time_ms = elapsed_ms(start);
+    result.time_ms = start.elapsed_ms();
     return result;
   };
   if (options_.abort != nullptr && options_.abort->load(std::memory_order_acquire)) return finish_unchanged(true);
@@ -261,7 +258,7 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
   result.final_inlier_rms_px = final_errors.inlier_rms_px;
   result.outliers = final_errors.outliers;
   result.solver_report = summary.BriefReport();
-  result.time_ms = elapsed_ms(start);
+  result.time_ms = start.elapsed_ms();
   spdlog::debug("bundle adjustment: {} free keyframes, {} free points, {} observations, {} iterations, "
                 "RMS {:.3f} -> {:.3f} px, {} outliers, {:.1f} ms{}",
                 result.free_keyframes, result.free_points, problem.observations.size(), result.iterations,

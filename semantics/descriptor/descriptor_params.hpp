@@ -1,7 +1,7 @@
 #pragma once
 // The decoded genome: every parameter the descriptor, its preprocessing and
 // the forest need, by name, plus which of the 185 values are active.
-// The value tables are those of the thesis (IV.4.1) and DESIGN.md; a genome
+// The value tables are those of the thesis (IV.4.1) and docs/design.md; a genome
 // field of n bits indexes its table with x = sum b_i 2^i (thesis eq. IV.1).
 #include <array>
 #include <optional>

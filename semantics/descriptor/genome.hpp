@@ -1,5 +1,5 @@
 #pragma once
-// The 211-bit genome of the modular descriptor (thesis IV.4.1, DESIGN.md):
+// The 211-bit genome of the modular descriptor (thesis IV.4.1, docs/design.md):
 // 26 parameter bits in ten fields, then 185 activation bits, one per module
 // value in module_layout.hpp order.
 //

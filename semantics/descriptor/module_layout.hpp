@@ -38,7 +38,7 @@ inline constexpr int kValueCount = [] {
   for (const int size : kModuleSizes) total += size;
   return total;
 }();
-static_assert(kValueCount == 185, "the thesis' module bank has 185 values (DESIGN.md)");
+static_assert(kValueCount == 185, "the thesis' module bank has 185 values (docs/design.md)");
 
 // Index of a module's first value in the 185-value layout.
 inline constexpr std::array<int, kModuleCount> kModuleOffsets = [] {

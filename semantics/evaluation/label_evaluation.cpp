@@ -1,6 +1,5 @@
 #include "semantics/evaluation/label_evaluation.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include <spdlog/spdlog.h>
@@ -15,15 +14,12 @@
 #include "semantics/forest/random_forest.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
 #include "semantics/text.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace facadeslam::semantics {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 constexpr int kClasses = static_cast<int>(kSemanticClasses.size());
 
@@ -98,7 +94,7 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const L
   set.samples.create(static_cast<int>(sample.size()), descriptor.width(), CV_32F);
   set.labels.reserve(sample.size());
   Progress progress("describing training images", images.size());
-  const auto start = Clock::now();
+  const Stopwatch start;
   std::size_t row = 0;
   while (row < sample.size()) {
     // The chosen keypoints of one image (sorted, possibly repeated).
@@ -113,9 +109,9 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const L
       ++end;
     }
     const cv::Mat bgr = load_labelled_image(images[image]).bgr;
-    const auto described = Clock::now();
+    const Stopwatch described;
     const cv::Mat rows = descriptor.compute(bgr, unique);
-    result.train_extraction_seconds += seconds_since(described);
+    result.train_extraction_seconds += described.elapsed_s();
     for (std::size_t r = row; r < end; ++r) {
       rows.row(unique_index[r - row]).copyTo(set.samples.row(static_cast<int>(r)));
       set.labels.push_back(sample[r].class_id);
@@ -124,7 +120,7 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const L
     progress.update(image + 1);
   }
   progress.finish();
-  spdlog::debug("described the training sample in {:.1f} s", seconds_since(start));
+  spdlog::debug("described the training sample in {:.1f} s", start.elapsed_s());
   return set;
 }
 
@@ -137,12 +133,12 @@ void test_forest(const std::vector<LabelledImage>& images, const LabelEvaluation
     result.unlabelled_keypoints += kps.unlabelled;
     result.test_keypoints += kps.points.size();
     if (!kps.points.empty()) {
-      auto start = Clock::now();
+      Stopwatch stage;
       const cv::Mat rows = descriptor.compute(loaded.bgr, kps.points);
-      result.test_extraction_seconds += seconds_since(start);
-      start = Clock::now();
+      result.test_extraction_seconds += stage.elapsed_s();
+      stage.restart();
       const std::vector<int> predicted = forest.predict(rows);
-      result.forest_seconds += seconds_since(start);
+      result.forest_seconds += stage.elapsed_s();
       for (std::size_t k = 0; k < predicted.size(); ++k) result.confusion.add(kps.classes[k], predicted[k]);
     }
     progress.update(i + 1);
@@ -188,7 +184,7 @@ std::vector<std::string> evaluation_class_names() {
 }
 
 LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
-  const auto start = Clock::now();
+  const Stopwatch start;
   if (options.step < 1) throw Error(cat("evaluate labels: the grid step must be at least 1, got ", options.step));
   // Everything that can be checked cheaply is checked before the long work.
   const std::vector<LabelledImage> train = first(read_facade_split(options.dataset, "train.txt"), options.max_train_images);
@@ -208,9 +204,9 @@ LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
   spdlog::info("training the forest: {} rows x {} values, {} trees of depth <= {}, {} split variables",
                set.samples.rows, set.samples.cols, result.forest.trees, result.forest.max_depth,
                result.forest.split_variables);
-  const auto training = Clock::now();
+  const Stopwatch training;
   const RandomForest forest = RandomForest::train(set.samples, set.labels, result.forest);
-  result.training_seconds = seconds_since(training);
+  result.training_seconds = training.elapsed_s();
 
   if (!options.model_out.empty()) {
     ForestModel model;
@@ -223,7 +219,7 @@ LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
   }
 
   test_forest(test, options, *descriptor, forest, result);
-  result.total_seconds = seconds_since(start);
+  result.total_seconds = start.elapsed_s();
   return result;
 }
 

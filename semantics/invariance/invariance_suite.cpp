@@ -1,6 +1,5 @@
 #include "semantics/invariance/invariance_suite.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include <opencv2/imgcodecs.hpp>
@@ -12,11 +11,11 @@
 #include "semantics/invariance/keypoint_mapping.hpp"
 #include "semantics/invariance/match_rate.hpp"
 #include "semantics/text.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace facadeslam::semantics {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 void check_options(const std::vector<std::filesystem::path>& images, const std::vector<PointDescriptor*>& descriptors,
                    const InvarianceOptions& o) {
@@ -81,7 +80,7 @@ std::vector<InvarianceCaseRun> default_invariance_cases() {
 
 InvarianceResult run_invariance(const std::vector<std::filesystem::path>& images,
                                 const std::vector<PointDescriptor*>& descriptors, const InvarianceOptions& options) {
-  const auto start = Clock::now();
+  const Stopwatch start;
   check_options(images, descriptors, options);
 
   InvarianceResult result;
@@ -132,7 +131,7 @@ InvarianceResult run_invariance(const std::vector<std::filesystem::path>& images
   }
   progress.finish();
   for (InvarianceCaseResult& r : result.cases) average_over_images(r);
-  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.seconds = start.elapsed_s();
   return result;
 }
 

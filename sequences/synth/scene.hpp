@@ -87,7 +87,7 @@ struct MotionBlurSpec {
   double shutter = 0.0;  // exposure as a fraction of the frame interval
 };
 
-// Illumination at a time (the diagonal model of DESIGN.md / thesis III.4.3).
+// Illumination at a time (the diagonal model of docs/design.md / thesis III.4.3).
 struct LightingKey {
   double time = 0.0;           // seconds
   double scale = 1.0;          // intensity scale a

@@ -1,7 +1,6 @@
 #include "sequences/synth/synthesize.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <future>
 #include <memory>
@@ -14,6 +13,7 @@
 #include "sequences/synth/frame_synthesizer.hpp"
 #include "sequences/synth/label_classes.hpp"
 #include "sequences/synth/sequence_writer.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace facadeslam::synth {
 namespace {
@@ -50,7 +50,7 @@ Json report(const SceneSpec& spec, const std::string& renderer) {
 
 SynthSummary synthesize_sequence(const SceneSpec& spec, const std::filesystem::path& folder,
                                  const SynthOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   FrameSynthesizer synthesizer(spec);
   SequenceWriter writer(folder, spec);
   const std::vector<int> sheet_frames =
@@ -82,7 +82,7 @@ SynthSummary synthesize_sequence(const SceneSpec& spec, const std::filesystem::p
     write_file_atomically(options.contact_sheet, [&](const std::filesystem::path& tmp) {
       if (!cv::imwrite(tmp.string(), sheet.image())) fail_file(options.contact_sheet, "cannot write the PNG image");
     });
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.seconds = start.elapsed_s();
   return summary;
 }
 

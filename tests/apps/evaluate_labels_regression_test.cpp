@@ -7,7 +7,6 @@
 // the test fails when the descriptor, the forest or the ground-truth reading
 // breaks, not on the small changes of a retuned detail. A class prior alone
 // (always "building") scores 47 % here.
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -17,6 +16,7 @@
 
 #include "tests/apps/cli_run.hpp"
 #include "tests/support/test_support.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace facadeslam {
 namespace {
@@ -33,9 +33,9 @@ TEST(EvaluateLabelsRegression, ThesisGenomeOnLabelMeFacadeSubset) {
   args.append(test::shell_quoted((test::shared_data_dir() / "labelmefacade").string()))
       .append(" --descriptor modular --max-train 20 --max-test 20 --step 18 --max-samples 6000 --json ")
       .append(test::shell_quoted(json.string()));
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   const auto r = test::run_cli(FACADESLAM_BINARY, args, dir.path());
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = start.elapsed_s();
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = test::read_file_text(json);
   const double overall = test::json_number(report, "overall_recognition_rate");

@@ -48,10 +48,10 @@ TEST(ImageFolderSource, ReadsImagesInNaturalOrderWithTimestampsFromFps) {
   for (std::size_t i = 0; i < frames.size(); ++i) {
     EXPECT_EQ(frames[i].index, i);
     EXPECT_DOUBLE_EQ(frames[i].timestamp, static_cast<double>(i) / 10.0);
-    EXPECT_EQ(test::mark_of(frames[i].image), marks[i]);
+    EXPECT_EQ(test::mark_of(frames[i].colour), marks[i]);
     EXPECT_EQ(frames[i].source.filename().string(), names[i]);
-    EXPECT_EQ(frames[i].image.type(), CV_8UC3);
-    EXPECT_EQ(frames[i].image.size(), cv::Size(32, 24));
+    EXPECT_EQ(frames[i].colour.type(), CV_8UC3);
+    EXPECT_EQ(frames[i].colour.size(), cv::Size(32, 24));
   }
   EXPECT_EQ(source.stats().frames_read, 4u);
   EXPECT_EQ(source.stats().frames_skipped_corrupt, 0u);
@@ -174,7 +174,7 @@ TEST(ImageFolderSource, StartStrideAndLimitSelectFrames) {
     const std::vector<std::size_t> expected = {1, 4, 7};
     for (std::size_t i = 0; i < 3; ++i) {
       EXPECT_EQ(frames[i].index, expected[i]);
-      EXPECT_EQ(test::mark_of(frames[i].image), static_cast<int>(10 * expected[i]));
+      EXPECT_EQ(test::mark_of(frames[i].colour), static_cast<int>(10 * expected[i]));
       // Timestamps keep the frame's place in the whole sequence.
       EXPECT_DOUBLE_EQ(frames[i].timestamp, static_cast<double>(expected[i]) / 2.0);
     }
@@ -241,9 +241,9 @@ TEST(ImageFolderSource, CorruptImagesAreCountedAndSkippedUnderSkip) {
   EXPECT_EQ(source.size_hint(), 5u);
   const auto frames = read_all(source);
   ASSERT_EQ(frames.size(), 3u);
-  EXPECT_EQ(test::mark_of(frames[0].image), 1);
-  EXPECT_EQ(test::mark_of(frames[1].image), 3);
-  EXPECT_EQ(test::mark_of(frames[2].image), 5);
+  EXPECT_EQ(test::mark_of(frames[0].colour), 1);
+  EXPECT_EQ(test::mark_of(frames[1].colour), 3);
+  EXPECT_EQ(test::mark_of(frames[2].colour), 5);
   EXPECT_EQ(frames[1].index, 2u) << "indices keep the place in the folder";
   EXPECT_EQ(source.stats().frames_read, 3u);
   EXPECT_EQ(source.stats().frames_skipped_corrupt, 2u);
@@ -269,8 +269,8 @@ TEST(ImageFolderSource, GreyImagesBecomeBgr) {
   ImageFolderSource source(dir.path(), {});
   const auto frame = source.next();
   ASSERT_TRUE(frame.has_value());
-  EXPECT_EQ(frame->image.type(), CV_8UC3);
-  EXPECT_EQ(frame->image.at<cv::Vec3b>(5, 5), cv::Vec3b(77, 77, 77));
+  EXPECT_EQ(frame->colour.type(), CV_8UC3);
+  EXPECT_EQ(frame->colour.at<cv::Vec3b>(5, 5), cv::Vec3b(77, 77, 77));
 }
 
 TEST(ImageFolderSource, SixteenBitImagesMapTheFullRangeOntoEightBits) {
@@ -285,13 +285,13 @@ TEST(ImageFolderSource, SixteenBitImagesMapTheFullRangeOntoEightBits) {
   const auto b = source.next();
   const auto c = source.next();
   ASSERT_TRUE(a && b && c);
-  EXPECT_EQ(a->image.type(), CV_8UC3);
-  EXPECT_EQ(a->image.at<cv::Vec3b>(0, 0), cv::Vec3b(128, 128, 128));
-  EXPECT_EQ(a->image.at<cv::Vec3b>(0, 31), cv::Vec3b(255, 255, 255));
-  EXPECT_EQ(b->image.type(), CV_8UC3);
-  EXPECT_EQ(b->image.at<cv::Vec3b>(3, 3), cv::Vec3b(0, 10, 255));
-  EXPECT_EQ(c->image.type(), CV_8UC3);
-  EXPECT_EQ(c->image.at<cv::Vec3b>(3, 3), cv::Vec3b(1, 2, 3));
+  EXPECT_EQ(a->colour.type(), CV_8UC3);
+  EXPECT_EQ(a->colour.at<cv::Vec3b>(0, 0), cv::Vec3b(128, 128, 128));
+  EXPECT_EQ(a->colour.at<cv::Vec3b>(0, 31), cv::Vec3b(255, 255, 255));
+  EXPECT_EQ(b->colour.type(), CV_8UC3);
+  EXPECT_EQ(b->colour.at<cv::Vec3b>(3, 3), cv::Vec3b(0, 10, 255));
+  EXPECT_EQ(c->colour.type(), CV_8UC3);
+  EXPECT_EQ(c->colour.at<cv::Vec3b>(3, 3), cv::Vec3b(1, 2, 3));
 }
 
 TEST(ImageFolderSource, ImagesAreDecodedOnlyWhenRequested) {
@@ -304,7 +304,7 @@ TEST(ImageFolderSource, ImagesAreDecodedOnlyWhenRequested) {
   test::write_marked_image(dir / "f2.png", 42);
   const auto second = source.next();
   ASSERT_TRUE(second.has_value());
-  EXPECT_EQ(test::mark_of(second->image), 42);
+  EXPECT_EQ(test::mark_of(second->colour), 42);
 }
 
 TEST(ImageFolderSource, ReadsTheVispCubeSequence) {
@@ -314,8 +314,8 @@ TEST(ImageFolderSource, ReadsTheVispCubeSequence) {
   std::size_t count = 0;
   std::string last_name;
   while (auto frame = source.next()) {
-    ASSERT_EQ(frame->image.size(), cv::Size(640, 480)) << frame->source;
-    ASSERT_EQ(frame->image.type(), CV_8UC3) << frame->source;
+    ASSERT_EQ(frame->colour.size(), cv::Size(640, 480)) << frame->source;
+    ASSERT_EQ(frame->colour.type(), CV_8UC3) << frame->source;
     ASSERT_EQ(frame->index, count);
     last_name = frame->source.filename().string();
     ++count;

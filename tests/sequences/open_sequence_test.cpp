@@ -52,7 +52,7 @@ TEST(OpenSequence, OpensEachKindAndAppliesOptions) {
   EXPECT_THAT(folder->description(), HasSubstr("image folder"));
   auto folder_frames = read_all(*folder);
   ASSERT_EQ(folder_frames.size(), 2u);
-  EXPECT_EQ(test::mark_of(folder_frames[1].image), 3);
+  EXPECT_EQ(test::mark_of(folder_frames[1].colour), 3);
   EXPECT_DOUBLE_EQ(folder_frames[1].timestamp, 3.0 / 30.0);
 
   auto list = open_sequence(dir / "tum", options);

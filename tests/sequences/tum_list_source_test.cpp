@@ -42,9 +42,9 @@ TEST(TumListSource, ReadsListedImagesInListOrderWithTheirTimestamps) {
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(frames[i].index, i);
     EXPECT_NEAR(frames[i].timestamp, 100.0 + static_cast<double>(i) / 10.0, 1e-9);
-    EXPECT_EQ(test::mark_of(frames[i].image), marks[i]);
+    EXPECT_EQ(test::mark_of(frames[i].colour), marks[i]);
     EXPECT_EQ(frames[i].source, dir / test::numbered("rgb/", marks[i], ".png"));
-    EXPECT_EQ(frames[i].image.size(), cv::Size(32, 24));
+    EXPECT_EQ(frames[i].colour.size(), cv::Size(32, 24));
   }
   EXPECT_EQ(source.stats().frames_read, 3u);
 }
@@ -73,7 +73,7 @@ TEST(TumListSource, StartStrideAndLimitSelectFrames) {
   ASSERT_EQ(frames.size(), 2u);
   EXPECT_EQ(frames[0].index, 2u);
   EXPECT_EQ(frames[1].index, 4u);
-  EXPECT_EQ(test::mark_of(frames[1].image), 4);
+  EXPECT_EQ(test::mark_of(frames[1].colour), 4);
 }
 
 TEST(TumListSource, LineThatDoesNotParseNamesFileAndLine) {

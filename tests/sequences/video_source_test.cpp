@@ -52,10 +52,10 @@ TEST(VideoSource, ReadsBackEveryFrameWithSizeOrderAndIncreasingTimestamps) {
   ASSERT_EQ(frames.size(), static_cast<std::size_t>(kFrames));
   for (std::size_t i = 0; i < frames.size(); ++i) {
     EXPECT_EQ(frames[i].index, i);
-    EXPECT_EQ(frames[i].image.size(), kSize);
-    EXPECT_EQ(frames[i].image.type(), CV_8UC3);
+    EXPECT_EQ(frames[i].colour.size(), kSize);
+    EXPECT_EQ(frames[i].colour.type(), CV_8UC3);
     EXPECT_EQ(frames[i].source, video);
-    EXPECT_NEAR(test::mark_of(frames[i].image), 20 * static_cast<int>(i), 4) << "frame " << i;
+    EXPECT_NEAR(test::mark_of(frames[i].colour), 20 * static_cast<int>(i), 4) << "frame " << i;
     if (i > 0) {
       EXPECT_GT(frames[i].timestamp, frames[i - 1].timestamp);
     }
@@ -79,7 +79,7 @@ TEST(VideoSource, StartStrideAndLimitSelectFrames) {
     const std::vector<std::size_t> expected = {2, 5, 8, 11};
     for (std::size_t i = 0; i < 4; ++i) {
       EXPECT_EQ(frames[i].index, expected[i]);
-      EXPECT_NEAR(test::mark_of(frames[i].image), 20 * static_cast<int>(expected[i]), 4);
+      EXPECT_NEAR(test::mark_of(frames[i].colour), 20 * static_cast<int>(expected[i]), 4);
       EXPECT_NEAR(frames[i].timestamp, static_cast<double>(expected[i]) / kFps, 1e-3);
     }
   }

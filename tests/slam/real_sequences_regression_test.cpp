@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 test::SlamRunLog run_folder(System& system, const fs::path& folder) {
   test::SlamRunLog log;
   auto source = open_sequence(folder, SequenceOptions{});
-  while (auto frame = source->next()) log.add(system.process(frame->index, frame->timestamp, frame->image));
+  while (auto frame = source->next()) log.add(system.process(std::move(*frame)));
   system.finish();
   return log;
 }

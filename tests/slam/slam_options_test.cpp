@@ -53,8 +53,8 @@ TEST(SlamOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_FLOAT_EQ(t.search.max_zmssd_per_pixel, d.search.max_zmssd_per_pixel);
   EXPECT_EQ(t.seed, d.seed);
   const MapMakerOptions &m = loaded.mapmaker, &md = defaults.mapmaker;
-  EXPECT_DOUBLE_EQ(m.initialisation.min_median_parallax_deg, md.initialisation.min_median_parallax_deg);
-  EXPECT_EQ(m.initialisation.min_points, md.initialisation.min_points);
+  EXPECT_DOUBLE_EQ(loaded.initialisation.min_median_parallax_deg, defaults.initialisation.min_median_parallax_deg);
+  EXPECT_EQ(loaded.initialisation.min_points, defaults.initialisation.min_points);
   EXPECT_DOUBLE_EQ(m.densify_initial_map_min_parallax_deg, md.densify_initial_map_min_parallax_deg);
   EXPECT_EQ(m.local_ba_selection.neighbours, md.local_ba_selection.neighbours);
   EXPECT_EQ(m.local_ba.max_iterations, md.local_ba.max_iterations);

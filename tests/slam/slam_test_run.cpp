@@ -63,7 +63,7 @@ void run_frames(System& system, SceneFrames& scene, int first, int last, SlamRun
   for (int i = first; i < last; ++i) {
     cv::Mat image = scene.render(i);
     if (filter) image = filter(i, std::move(image));
-    log.add(system.process(static_cast<std::size_t>(i), scene.timestamp(i), image));
+    log.add(system.process({static_cast<std::size_t>(i), scene.timestamp(i), image}));
   }
 }
 

@@ -46,7 +46,7 @@ TEST(System, SameInputGivesTheSameResultBitForBit) {
     System system(scene.camera(), test::synchronous_options());
     std::vector<SE3d> poses;
     for (int i = 0; i < scene.size(); ++i) {
-      const FrameReport r = system.process(static_cast<std::size_t>(i), scene.timestamp(i), frames[static_cast<std::size_t>(i)]);
+      const FrameReport r = system.process({static_cast<std::size_t>(i), scene.timestamp(i), frames[static_cast<std::size_t>(i)]});
       if (r.has_pose) poses.push_back(r.T_c_w);
     }
     return poses;

@@ -7,9 +7,9 @@
 #include <opencv2/core.hpp>
 
 #include "core/util/error.hpp"
-#include "tests/tracker/rendered_plane.hpp"
+#include "tests/support/rendered_plane.hpp"
 
-namespace facadeslam::tracker {
+namespace facadeslam {
 namespace {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
@@ -197,4 +197,4 @@ TEST(RobustScale, MedianOfSquaredNormsWithAFloor) {
 }
 
 }  // namespace
-}  // namespace facadeslam::tracker
+}  // namespace facadeslam

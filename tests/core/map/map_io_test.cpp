@@ -39,6 +39,7 @@ void expect_identical(const Map& a, const Map& b) {
   ASSERT_EQ(ka.size(), kb.size());
   for (std::size_t i = 0; i < ka.size(); ++i) {
     EXPECT_EQ(ka[i]->id(), kb[i]->id());
+    EXPECT_EQ(ka[i]->frame_index(), kb[i]->frame_index());
     EXPECT_EQ(ka[i]->timestamp(), kb[i]->timestamp());
     EXPECT_EQ(ka[i]->T_c_w().matrix(), kb[i]->T_c_w().matrix());
     EXPECT_EQ(ka[i]->mean_depth(), kb[i]->mean_depth());
@@ -83,7 +84,8 @@ class MapIo : public ::testing::Test {
  protected:
   void SetUp() override {
     test::build_test_map(map, 25);
-    map.points()[4]->mark_bad();
+    const auto bad = map.points()[4];
+    map.update([&](MapEditor& edit) { edit.mark_bad(*bad); });
     save_map(file, map, camera);
   }
   test::TempDir dir;
@@ -129,7 +131,7 @@ TEST_F(MapIo, WrongVersionIsRejected) {
   write_file(dir / "v99.fslmap", data);
   Map loaded;
   EXPECT_THAT(error_of([&] { load_map(dir / "v99.fslmap", loaded); }),
-              AllOf(HasSubstr("v99.fslmap"), HasSubstr("version 99"), HasSubstr("reads version 1")));
+              AllOf(HasSubstr("v99.fslmap"), HasSubstr("version 99"), HasSubstr("reads version 2")));
 }
 
 TEST_F(MapIo, NotAMapFile) {

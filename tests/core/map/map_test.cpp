@@ -56,17 +56,55 @@ TEST(Map, IdsAreUniqueAndLookupsWork) {
   EXPECT_NE(map.new_point_id(), map.new_point_id());
 }
 
-TEST(Map, BadPointsLeaveSnapshotsAndAreRemoved) {
+TEST(Map, BadPointsLeaveSnapshotsAndAreRemovedWithTheirMeasurements) {
   Map map;
   test::build_test_map(map, 6);
-  const auto v0 = map.version();
-  map.points()[2]->mark_bad();
+  const auto bad = map.points()[2];
+  map.update([&](MapEditor& edit) { edit.mark_bad(*bad); });
   EXPECT_EQ(map.snapshot_points().size(), 5u);
+  for (const auto& kf : map.keyframes()) ASSERT_EQ(kf->measurements().count(bad->id()), 1u);
   const auto removed = map.remove_bad_points();
-  ASSERT_EQ(removed.size(), 1u);
+  ASSERT_EQ(removed, std::vector<MapPoint::Id>{bad->id()});
   EXPECT_EQ(map.point_count(), 5u);
   EXPECT_EQ(map.point(removed[0]), nullptr);
-  EXPECT_GT(map.version(), v0);
+  for (const auto& kf : map.keyframes()) {
+    EXPECT_EQ(kf->measurements().count(bad->id()), 0u);
+    EXPECT_EQ(kf->measurements().size(), 5u);
+  }
+}
+
+TEST(Map, ObservationsArePublishedWithTheirPoints) {
+  Map map;
+  test::build_test_map(map, 2);
+  const auto kf = map.keyframes().back();
+  auto point = std::make_shared<MapPoint>(map.new_point_id(), map.points().front()->source(), PointGeometry{});
+  NewPoints more;
+  more.points.push_back(point);
+  more.observations.push_back({kf, point->id(), {1, {3.0, 4.0}, false}});
+  map.add(more);
+  EXPECT_EQ(map.point(point->id()), point);
+  ASSERT_EQ(kf->measurements().count(point->id()), 1u);
+  EXPECT_EQ(kf->measurements().at(point->id()).level, 1);
+  map.update([&](MapEditor& edit) { EXPECT_TRUE(edit.erase_measurement(*kf, point->id())); });
+  EXPECT_EQ(kf->measurements().count(point->id()), 0u);
+}
+
+TEST(Map, KeyFrameSnapshotsCopyPoseAndDepth) {
+  Map map;
+  test::build_test_map(map, 2);
+  const auto kf = map.keyframes().back();
+  const SE3d moved = SE3d::exp((Eigen::Matrix<double, 6, 1>() << 1, 2, 3, 0, 0, 0.1).finished());
+  map.update([&](MapEditor& edit) {
+    edit.set_pose(*kf, moved);
+    edit.set_depth_stats(*kf, 7.0, 0.25);
+  });
+  const auto snapshot = map.snapshot_keyframes();
+  ASSERT_EQ(snapshot.size(), 2u);
+  EXPECT_EQ(snapshot.back().keyframe, kf);
+  EXPECT_EQ(snapshot.back().T_c_w.matrix(), moved.matrix());
+  EXPECT_EQ(snapshot.back().mean_depth, 7.0);
+  EXPECT_EQ(snapshot.back().depth_sigma, 0.25);
+  EXPECT_TRUE(snapshot.back().centre_w().isApprox(moved.inverse().translation()));
 }
 
 TEST(Map, SnapshotCopiesGeometry) {
@@ -90,15 +128,15 @@ TEST(Map, ConcurrentReadersAndWriterSeeWholeObjects) {
     reading.wait(false);
     for (int i = 0; i < 200; ++i) {
       auto source = map.points().front()->source();
-      map.add_point(std::make_shared<MapPoint>(map.new_point_id(), source, PointGeometry{}));
+      map.add({}, {std::make_shared<MapPoint>(map.new_point_id(), source, PointGeometry{})});
       const auto points = map.points();
-      std::unique_lock lock(map.mutex());
-      for (const auto& p : points) {
-        PointGeometry g = p->geometry();
-        g.p_w.x() += 1e-3;
-        p->set_geometry(g);
-      }
-      map.bump_version_locked();
+      map.update([&](MapEditor& edit) {
+        for (const auto& p : points) {
+          PointGeometry g = p->geometry();
+          g.p_w.x() += 1e-3;
+          edit.set_geometry(*p, g);
+        }
+      });
     }
     stop = true;
   });

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mapmaker/ba/synthetic_street.hpp"
+#include "tests/support/synthetic_street.hpp"
 #include "tests/mapmaker/ba/ba_test_utils.hpp"
 
 namespace facadeslam {

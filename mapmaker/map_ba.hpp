@@ -1,0 +1,30 @@
+#pragma once
+// Bundle adjustment of the shared Map: copies the keyframes and points taking
+// part into a BaProblem (Map::read), solves without any lock (the tracker
+// keeps running), then writes poses and positions back in one short
+// exclusive section (Map::update). Outlier measurements (except a point's
+// source measurement) are dropped from their keyframes. An aborted solve
+// publishes its last accepted iterate too (report.ba.aborted says so).
+//
+// Map maker thread only (the only writer of poses, points and measurements).
+#include <optional>
+
+#include "core/camera/camera.hpp"
+#include "core/map/map.hpp"
+#include "mapmaker/ba/ba_selection.hpp"
+#include "mapmaker/ba/bundle_adjuster.hpp"
+
+namespace facadeslam {
+
+struct MapBaReport {
+  BaResult ba;
+  std::size_t keyframes = 0, points = 0, observations = 0;
+  std::size_t outliers_removed = 0;
+};
+
+// Local BA around `newest` (with `selection` neighbours) when given,
+// otherwise a global BA (first keyframe fixed, scale anchored on the second).
+MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adjuster,
+                       std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection = {});
+
+}  // namespace facadeslam

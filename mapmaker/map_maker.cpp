@@ -1,0 +1,257 @@
+#include "mapmaker/map_maker.hpp"
+
+#include <cmath>
+#include <map>
+
+#include <spdlog/spdlog.h>
+
+#include "core/util/stopwatch.hpp"
+#include "mapmaker/epipolar_partner.hpp"
+#include "mapmaker/epipolar_search.hpp"
+#include "mapmaker/map_ba.hpp"
+#include "mapmaker/point_geometry.hpp"
+
+namespace facadeslam {
+namespace {
+
+// A map needs at least this many points to track from.
+constexpr std::size_t kMinInitialPoints = 30;
+
+// Keyframes a single-view (depth-prior) point may wait for a second view.
+constexpr KeyFrame::Id kSingleViewGraceKeyframes = 3;
+
+}  // namespace
+
+MapMaker::MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options)
+    : camera_(std::move(camera)), map_(map), queue_(queue), options_(std::move(options)) {}
+
+MapMaker::~MapMaker() { stop(); }
+
+MapMakerStats MapMaker::stats() const {
+  std::lock_guard lock(stats_mutex_);
+  return stats_;
+}
+
+std::optional<SE3d> MapMaker::initialise(const InitialViews& views) {
+  Measurements first_measurements, second_measurements;
+  std::vector<std::shared_ptr<MapPoint>> initial;
+  const KeyFrame::Id first_id = map_.new_keyframe_id();
+  for (std::size_t i = 0; i < views.points_first.size(); ++i) {
+    const PatchSource source{first_id, views.first.pyramid, 0, views.pixels_first[i]};
+    auto p = std::make_shared<MapPoint>(map_.new_point_id(), source,
+                                        source_geometry(camera_, SE3d(), source, views.points_first[i]));
+    first_measurements[p->id()] = {0, views.pixels_first[i], true};
+    second_measurements[p->id()] = {0, views.pixels_second[i], false};
+    initial.push_back(std::move(p));
+  }
+  auto kf0 = std::make_shared<KeyFrame>(first_id, views.first, SE3d(), std::move(first_measurements));
+  auto kf1 = std::make_shared<KeyFrame>(map_.new_keyframe_id(), views.second, views.T_second_first,
+                                        std::move(second_measurements));
+  map_.add({kf0, kf1}, initial);
+  NewPoints points{std::move(initial), {}};
+  update_depth_stats(*kf0);
+  update_depth_stats(*kf1);
+  // The initialiser's points are level-0 corners only: with enough parallax,
+  // search both keyframes' corners at every level against the other one for
+  // the coarse-level points the tracker's coarse stage needs to survive fast
+  // motion (map_maker_options.hpp).
+  if (views.median_parallax_deg >= options_.densify_initial_map_min_parallax_deg)
+    for (const auto& [newest, other] : {std::pair{kf1, kf0}, std::pair{kf0, kf1}}) {
+      NewPoints more = epipolar_new_points(map_, camera_, newest, other, options_.epipolar);
+      map_.add(more);
+      points.append(std::move(more));
+    }
+
+  const Stopwatch t0;
+  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt);
+  remove_outlier_points();
+  update_depth_stats(*kf0);
+  update_depth_stats(*kf1);
+  spdlog::info("map initialised from frames {} and {}: {} points ({} model), BA {:.2f} -> {:.2f} px in {:.0f} ms",
+               views.first.index, views.second.index, map_.point_count(), views.model, ba.ba.initial_rms_px,
+               ba.ba.final_rms_px, t0.elapsed_ms());
+  if (map_.point_count() < kMinInitialPoints) {
+    spdlog::warn("initial map has only {} points; discarding it", map_.point_count());
+    map_.clear();
+    return std::nullopt;
+  }
+  {
+    std::lock_guard lock(stats_mutex_);
+    stats_.keyframes_added += 2;
+    stats_.points_created += points.points.size();
+    stats_.global_ba_runs += 1;
+    stats_.global_ba_ms += ba.ba.time_ms;
+  }
+  return kf1->T_c_w();
+}
+
+void MapMaker::update_depth_stats(KeyFrame& keyframe) {
+  std::vector<double> depths;
+  map_.read([&](const MapView& view) {
+    for (const auto& [id, m] : keyframe.measurements()) {
+      const auto p = view.point(id);
+      if (!p) continue;
+      const double z = (keyframe.T_c_w() * p->position()).z();
+      if (z > 0) depths.push_back(z);
+    }
+  });
+  if (depths.empty()) return;
+  // Median and a robust spread: facades give heavy-tailed depth distributions.
+  std::sort(depths.begin(), depths.end());
+  const double median = depths[depths.size() / 2];
+  std::vector<double> deviations;
+  for (double d : depths) deviations.push_back(std::abs(d - median));
+  std::sort(deviations.begin(), deviations.end());
+  const double sigma = 1.4826 * deviations[deviations.size() / 2];
+  map_.update([&](MapEditor& edit) { edit.set_depth_stats(keyframe, median, sigma); });
+}
+
+std::shared_ptr<KeyFrame> MapMaker::epipolar_partner(const KeyFrame& keyframe) const {
+  // Poses and depths: the map maker, their only writer, reads them without a lock.
+  std::vector<std::shared_ptr<KeyFrame>> others;
+  std::vector<SE3d> poses;
+  for (const auto& kf : map_.keyframes())
+    if (kf->id() != keyframe.id()) {
+      others.push_back(kf);
+      poses.push_back(kf->T_c_w());
+    }
+  const auto choice = choose_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, options_.epipolar_partner);
+  return choice ? others[*choice] : nullptr;
+}
+
+void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
+  const Stopwatch t0;
+  Measurements measurements;
+  for (const auto& m : candidate.measurements)
+    if (!m.point->is_bad() && map_.point(m.point->id())) measurements[m.point->id()] = {m.level, m.pixel, false};
+  auto kf = std::make_shared<KeyFrame>(map_.new_keyframe_id(), candidate.frame, candidate.T_c_w,
+                                       std::move(measurements));
+  map_.add_keyframe(kf);
+  update_depth_stats(*kf);
+
+  NewPoints created;
+  if (const auto other = epipolar_partner(*kf)) {
+    EpipolarSearchStats es;
+    created = epipolar_new_points(map_, camera_, kf, other, options_.epipolar, &es);
+    map_.add(created);
+    const auto& by_level = es.triangulated_per_level;
+    spdlog::debug(
+        "keyframe {} (frame {}): {} tracked, epipolar search with keyframe {}: {} tried, {} matched, {} new "
+        "(levels 0-3: {} {} {} {})",
+        kf->id(), candidate.frame.index, candidate.measurements.size(), other->id(), es.candidates, es.matched,
+        es.triangulated, by_level[0], by_level[1], by_level[2], by_level[3]);
+  }
+  if (options_.depth_prior_points && candidate.turned_on_the_spot) {
+    NewPoints more = depth_prior_points(map_, camera_, kf, options_.depth_prior);
+    spdlog::debug("keyframe {} (frame {}): turning on the spot, {} points at a prior depth", kf->id(),
+                  candidate.frame.index, more.points.size());
+    map_.add(more);
+    created.append(std::move(more));
+  }
+
+  const MapBaReport ba =
+      adjust_map(map_, camera_, BundleAdjuster(options_.local_ba), kf->id(), options_.local_ba_selection);
+  remove_outlier_points();
+  update_depth_stats(*kf);
+  {
+    std::lock_guard lock(stats_mutex_);
+    stats_.keyframes_added += 1;
+    stats_.points_created += created.points.size();
+    stats_.local_ba_runs += 1;
+    stats_.local_ba_ms += ba.ba.time_ms;
+    stats_.keyframe_ms += t0.elapsed_ms();
+  }
+  map_changed_since_global_ba_ = true;
+  ++keyframes_since_global_ba_;
+}
+
+void MapMaker::remove_outlier_points() {
+  // Measurement counts over all keyframes (the map maker, their only writer,
+  // reads them without a lock).
+  const auto keyframes = map_.keyframes();
+  std::map<MapPoint::Id, int> measured;
+  KeyFrame::Id newest = 0;
+  for (const auto& kf : keyframes) {
+    newest = std::max(newest, kf->id());
+    for (const auto& [id, m] : kf->measurements()) ++measured[id];
+  }
+  std::vector<std::shared_ptr<MapPoint>> outliers;
+  for (const auto& p : map_.points()) {
+    const bool rarely_found =
+        p->times_searched() >= static_cast<std::uint32_t>(options_.outlier_min_searches) &&
+        p->times_found() < options_.outlier_max_found_ratio * p->times_searched();
+    const auto it = measured.find(p->id());
+    // A point seen by one keyframe only is kept while its keyframe is among
+    // the newest few: a depth-prior point waits there for its second view.
+    const bool awaiting_second_view = p->source().keyframe_id + kSingleViewGraceKeyframes > newest;
+    const bool too_few_views = it == measured.end() || (it->second < 2 && !awaiting_second_view);
+    if (rarely_found || too_few_views) outliers.push_back(p);
+  }
+  if (!outliers.empty())
+    map_.update([&](MapEditor& edit) {
+      for (const auto& p : outliers) edit.mark_bad(*p);
+    });
+  const auto removed = map_.remove_bad_points();
+  if (removed.empty()) return;
+  std::lock_guard lock(stats_mutex_);
+  stats_.points_removed += removed.size();
+}
+
+void MapMaker::run_global_ba() {
+  abort_global_ba_ = false;
+  BundleAdjusterOptions options = options_.global_ba;
+  options.abort = &abort_global_ba_;
+  // Abandon the global BA as soon as the tracker queues a keyframe: local
+  // mapping around new keyframes matters more than polishing the old map.
+  options.on_iteration = [this](int) {
+    if (!queue_.empty()) abort_global_ba_ = true;
+  };
+  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options), std::nullopt);
+  std::lock_guard lock(stats_mutex_);
+  if (ba.ba.aborted) {
+    ++stats_.global_ba_aborted;
+    return;
+  }
+  ++stats_.global_ba_runs;
+  stats_.global_ba_ms += ba.ba.time_ms;
+  map_changed_since_global_ba_ = false;
+  keyframes_since_global_ba_ = 0;
+}
+
+void MapMaker::process_pending() {
+  while (auto candidate = queue_.try_pop()) {
+    add_keyframe(std::move(*candidate));
+    if (keyframes_since_global_ba_ >= static_cast<std::size_t>(options_.sync_global_ba_every)) {
+      run_global_ba();
+      remove_outlier_points();
+    }
+  }
+}
+
+void MapMaker::start() {
+  if (thread_.joinable()) return;
+  thread_ = std::thread([this] { run(); });
+}
+
+void MapMaker::stop() {
+  if (!thread_.joinable()) return;
+  queue_.close();
+  thread_.join();
+}
+
+void MapMaker::run() {
+  for (;;) {
+    queue_.wait_until([&] { return map_changed_since_global_ba_; });
+    if (auto candidate = queue_.try_pop()) {
+      add_keyframe(std::move(*candidate));
+      continue;
+    }
+    if (queue_.closed()) break;
+    if (map_changed_since_global_ba_) {
+      run_global_ba();
+      remove_outlier_points();
+    }
+  }
+}
+
+}  // namespace facadeslam

@@ -1,0 +1,95 @@
+#pragma once
+// PTAM's map maker: builds the first map from a two-view initialisation,
+// turns the tracker's keyframe candidates into keyframes, grows the map by
+// epipolar search, refines it by local bundle adjustment after each keyframe
+// and global bundle adjustment when idle, and removes outliers.
+//
+// Two ways to run it:
+// - threaded: start() runs a thread that waits on the keyframe queue (a
+//   condition variable, no sleeping); a global BA started while idle is
+//   abandoned as soon as a new candidate arrives; stop() joins;
+// - synchronous (--sync): the replay loop calls process_pending() right after
+//   the tracker, so every run with the same input gives the same map.
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/camera/camera.hpp"
+#include "core/image/frame.hpp"
+#include "core/map/keyframe_candidate.hpp"
+#include "core/map/map.hpp"
+#include "mapmaker/map_maker_options.hpp"
+
+namespace facadeslam {
+
+// What start-up (slam/initialiser.hpp) found: two frames and the points
+// triangulated between them, to become the first two keyframes.
+struct InitialViews {
+  Frame first, second;
+  SE3d T_second_first;                        // maps first-camera points into the second camera
+  std::vector<Eigen::Vector3d> points_first;  // in the first camera's frame
+  std::vector<Eigen::Vector2d> pixels_first;  // level-0, per point
+  std::vector<Eigen::Vector2d> pixels_second;
+  double median_parallax_deg = 0.0;
+  std::string model;  // which two-view model gave them, for the log
+};
+
+struct MapMakerStats {
+  std::size_t keyframes_added = 0;
+  std::size_t points_created = 0;
+  std::size_t points_removed = 0;
+  std::size_t local_ba_runs = 0, global_ba_runs = 0, global_ba_aborted = 0;
+  double local_ba_ms = 0, global_ba_ms = 0, keyframe_ms = 0;  // totals
+};
+
+class MapMaker {
+ public:
+  MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options);
+  ~MapMaker();
+  MapMaker(const MapMaker&) = delete;
+  MapMaker& operator=(const MapMaker&) = delete;
+
+  // Builds the initial map (two keyframes, the triangulated points, a global
+  // BA). Returns the pose of the second frame, or nothing if too few points
+  // survived (the map is left empty). Call before start().
+  std::optional<SE3d> initialise(const InitialViews& views);
+
+  // Synchronous mode: handles every queued candidate (and a periodic global BA).
+  void process_pending();
+  // One global bundle adjustment now (synchronous mode, end of a run).
+  void run_global_ba();
+
+  // Threaded mode.
+  void start();
+  void stop();  // finishes queued candidates, then joins
+
+  MapMakerStats stats() const;
+
+ private:
+  void run();
+  void add_keyframe(KeyFrameCandidate candidate);
+  void remove_outlier_points();
+  void update_depth_stats(KeyFrame& keyframe);
+  // The keyframe `keyframe` searches for new points against (epipolar_partner.hpp).
+  std::shared_ptr<KeyFrame> epipolar_partner(const KeyFrame& keyframe) const;
+
+  Camera camera_;
+  Map& map_;
+  KeyFrameQueue& queue_;
+  MapMakerOptions options_;
+
+  std::thread thread_;
+  std::atomic<bool> stopping_{false};
+  std::atomic<bool> abort_global_ba_{false};
+  bool map_changed_since_global_ba_ = false;  // map maker thread only
+  std::size_t keyframes_since_global_ba_ = 0;
+
+  mutable std::mutex stats_mutex_;
+  MapMakerStats stats_;
+};
+
+}  // namespace facadeslam

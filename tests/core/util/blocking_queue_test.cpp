@@ -1,0 +1,62 @@
+#include "core/util/blocking_queue.hpp"
+
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace facadeslam {
+namespace {
+
+// The consumer loop the map maker runs: wait, pop, stop once closed and empty.
+std::vector<int> consume(BlockingQueue<int>& queue) {
+  std::vector<int> received;
+  for (;;) {
+    queue.wait_until([] { return false; });
+    if (auto item = queue.try_pop()) {
+      received.push_back(*item);
+      continue;
+    }
+    if (queue.closed()) return received;
+  }
+}
+
+TEST(BlockingQueue, DeliversInOrderAcrossThreads) {
+  BlockingQueue<int> queue;
+  std::vector<int> received;
+  std::thread consumer([&] { received = consume(queue); });
+  for (int i = 0; i < 100; ++i) queue.push(i);
+  queue.close();
+  consumer.join();
+  ASSERT_EQ(received.size(), 100u);
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(received[static_cast<std::size_t>(i)], i);
+}
+
+TEST(BlockingQueue, ItemsQueuedBeforeCloseAreStillDelivered) {
+  BlockingQueue<int> queue;
+  queue.push(1);
+  queue.push(2);
+  queue.close();
+  EXPECT_EQ(consume(queue), (std::vector<int>{1, 2}));
+  EXPECT_FALSE(queue.try_pop().has_value());
+  EXPECT_TRUE(queue.closed());
+}
+
+TEST(BlockingQueue, WaitReturnsAtOnceWhenTheWakeConditionHolds) {
+  BlockingQueue<int> queue;
+  bool called = false;
+  queue.wait_until([&] { return called = true; });
+  EXPECT_TRUE(called);
+  EXPECT_TRUE(queue.empty());
+}
+
+TEST(BlockingQueue, CloseWakesAWaitingConsumer) {
+  BlockingQueue<int> queue;
+  std::thread waiter([&] { queue.wait_until([] { return false; }); });
+  queue.close();
+  waiter.join();
+  EXPECT_TRUE(queue.closed());
+}
+
+}  // namespace
+}  // namespace facadeslam

@@ -1,0 +1,127 @@
+// The map maker's mapping steps on an exactly rendered textured plane seen
+// from two keyframes: new points by epipolar search at every pyramid level,
+// and bundle adjustment of the shared Map, including an aborted one.
+#include <atomic>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/map/map.hpp"
+#include "mapmaker/epipolar_search.hpp"
+#include "mapmaker/map_ba.hpp"
+#include "tests/support/plane_keyframe.hpp"
+#include "tests/support/rendered_plane.hpp"
+
+namespace facadeslam {
+namespace {
+
+class PlaneKeyFrames : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // Two views 0.15 m apart (~4 degrees of parallax at 2 m), both facing the plane.
+    first_ = add_keyframe(SE3d());
+    second_ = add_keyframe(test::view_pose(plane_, plane_.plane_depth, 0.0, 0.0, 0.15, 0.0));
+  }
+
+  std::shared_ptr<KeyFrame> add_keyframe(const SE3d& T_c_w) {
+    return test::add_plane_keyframe(map_, plane_, camera_, T_c_w);
+  }
+
+  // RMS reprojection error (level-0 px) of every measurement in the map as it is now.
+  double map_rms_px() const {
+    double sum = 0.0;
+    int n = 0;
+    map_.read([&](const MapView& view) {
+      for (const auto& kf : {first_, second_})
+        for (const auto& [id, m] : kf->measurements()) {
+          const auto p = view.point(id);
+          if (!p) continue;
+          sum += (camera_.project(kf->T_c_w() * p->position()) - m.pixel).squaredNorm();
+          ++n;
+        }
+    });
+    return n > 0 ? std::sqrt(sum / n) : 0.0;
+  }
+
+  // Depth of a world point below the plane (the plane is Z = plane_depth).
+  double off_plane(const Eigen::Vector3d& p_w) const { return std::abs(p_w.z() - plane_.plane_depth); }
+
+  test::RenderedPlane plane_ = test::make_plane(3);
+  Camera camera_ = test::test_camera();
+  Map map_;
+  std::shared_ptr<KeyFrame> first_, second_;
+};
+
+TEST_F(PlaneKeyFrames, EpipolarSearchCreatesAccuratePointsAtEveryLevel) {
+  EpipolarSearchStats stats;
+  const NewPoints found = epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}, &stats);
+  map_.add(found);
+  const auto& points = found.points;
+  ASSERT_EQ(static_cast<int>(points.size()), stats.triangulated);
+  ASSERT_EQ(found.observations.size(), 2 * points.size());
+  // Coarse points are what the tracker's coarse stage searches for.
+  for (int level = 0; level < kPyramidLevels; ++level)
+    EXPECT_GT(stats.triangulated_per_level[static_cast<std::size_t>(level)], 0) << "level " << level;
+  int far_off = 0;
+  for (const auto& p : points) {
+    EXPECT_EQ(p->source().keyframe_id, second_->id());
+    // 2 m away with a 0.15 m baseline: 0.1 level-pixel of error is ~1.3 mm x 2^level of depth.
+    far_off += off_plane(p->position()) > 0.02 * (1 << p->source().level);
+    EXPECT_TRUE(second_->measurements().at(p->id()).from_source);
+    EXPECT_FALSE(first_->measurements().at(p->id()).from_source);
+  }
+  EXPECT_LE(far_off, static_cast<int>(points.size()) / 50) << "of " << points.size();
+}
+
+TEST_F(PlaneKeyFrames, EpipolarSearchKeepsAwayOnlyFromMeasurementsAtTheSameOrNextLevel) {
+  // A first search fills the new keyframe with measurements; a second one
+  // finds no room at the levels already covered, yet what it adds stays
+  // 4 level pixels from the measurements of its own and the next level.
+  const NewPoints first_found = epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{});
+  map_.add(first_found);
+  const auto& first_points = first_found.points;
+  EpipolarSearchStats stats;
+  const NewPoints more = epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}, &stats);
+  for (const auto& p : more.points) {
+    const int level = p->source().level;
+    const Eigen::Vector2d at = ImagePyramid::level0_to_level(p->source().pixel_level0, level);
+    for (const auto& q : first_points) {
+      const int q_level = q->source().level;
+      if (q_level != level && q_level != level + 1) continue;
+      const Eigen::Vector2d q_at = ImagePyramid::level0_to_level(q->source().pixel_level0, level);
+      EXPECT_GE((q_at - at).norm(), 4.0);
+    }
+  }
+}
+
+TEST_F(PlaneKeyFrames, AbortedBundleAdjustmentStillPublishesItsProgress) {
+  map_.add(epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}));
+  ASSERT_GT(map_.point_count(), 100u);
+  // Push every point 5 cm along its ray from the first camera: ~1 px of
+  // disparity error in the second view.
+  const auto points = map_.points();
+  map_.update([&](MapEditor& edit) {
+    for (const auto& p : points) {
+      PointGeometry g = p->geometry();
+      g.p_w *= 1.0 + 0.05 / g.p_w.norm();
+      edit.set_geometry(*p, g);
+    }
+  });
+  const double before = map_rms_px();
+  std::atomic<bool> abort{false};
+  BundleAdjusterOptions options;
+  options.abort = &abort;
+  options.on_iteration = [&](int iteration) {
+    if (iteration >= 1) abort = true;  // stop after the first step
+  };
+  const MapBaReport report = adjust_map(map_, camera_, BundleAdjuster(options), std::nullopt);
+  EXPECT_TRUE(report.ba.aborted);
+  EXPECT_GE(report.ba.iterations, 1);
+  EXPECT_LT(report.ba.final_rms_px, report.ba.initial_rms_px);
+  // The map holds the aborted solve's last iterate, not the input.
+  EXPECT_NEAR(map_rms_px(), report.ba.final_rms_px, 1e-6);
+  EXPECT_LT(map_rms_px(), 0.5 * before) << "the aborted solve's progress was dropped";
+}
+
+}  // namespace
+}  // namespace facadeslam

@@ -1,0 +1,176 @@
+// The Tracker on an exactly rendered textured plane: a map of one keyframe
+// whose points are the plane's FAST corners at every pyramid level, then
+// views along a smooth path. Checks the poses against the truth, the quality
+// and keyframe decisions, and relocalisation after a blank frame.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/map/keyframe_candidate.hpp"
+#include "core/map/map.hpp"
+#include "tests/support/rendered_plane.hpp"
+#include "tracker/tracker.hpp"
+
+namespace facadeslam {
+namespace {
+
+using test::RenderedPlane;
+
+// The plane's map: one keyframe at the world origin looking at the plane.
+class PlaneTracking : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto pyramid = std::make_shared<const ImagePyramid>(test::render(plane_, camera_, SE3d()));
+    const KeyFrame::Id keyframe_id = map_.new_keyframe_id();
+    Measurements measurements;
+    std::vector<std::shared_ptr<MapPoint>> points;
+    const int per_level[kPyramidLevels] = {300, 150, 60, 25};
+    for (int level = 0; level < kPyramidLevels; ++level)
+      for (auto& p : test::points_from_source(plane_, camera_, pyramid, level, per_level[level])) {
+        p.source.keyframe_id = keyframe_id;
+        auto point = std::make_shared<MapPoint>(map_.new_point_id(), p.source, p.geometry);
+        measurements[point->id()] = {level, p.source.pixel_level0, true};
+        points.push_back(std::move(point));
+      }
+    keyframe_ = std::make_shared<KeyFrame>(keyframe_id, Frame{0, 0.0, cv::Mat(), {}, pyramid}, SE3d(),
+                                           std::move(measurements));
+    map_.add({keyframe_}, points);
+    map_.update([&](MapEditor& edit) { edit.set_depth_stats(*keyframe_, plane_.plane_depth, 0.0); });
+  }
+
+  // Frame i of a smooth path: sideways and up, rolling and tilting a little.
+  SE3d path_pose(int i) const {
+    const double s = 0.004 * i;  // metres
+    return test::view_pose(plane_, plane_.plane_depth - 0.5 * s, 0.3 * s, 0.2 * s, s, -0.5 * s);
+  }
+
+  Frame frame(std::size_t index, const cv::Mat& image) const {
+    return {index, static_cast<double>(index) / 30.0, image, {}, std::make_shared<const ImagePyramid>(image)};
+  }
+
+  static double position_error(const SE3d& a, const SE3d& b) {
+    return (a.inverse().translation() - b.inverse().translation()).norm();
+  }
+  static double rotation_error_deg(const SE3d& a, const SE3d& b) {
+    return (a * b.inverse()).log().tail<3>().norm() * 180.0 / M_PI;
+  }
+
+  RenderedPlane plane_ = test::make_plane(2);
+  Camera camera_ = test::test_camera();
+  Map map_;
+  KeyFrameQueue queue_;
+  std::shared_ptr<KeyFrame> keyframe_;
+};
+
+TEST_F(PlaneTracking, FollowsASmoothPathAccurately) {
+  Tracker tracker(camera_, map_, queue_, TrackerOptions{});
+  tracker.start(SE3d(), 0);
+  for (int i = 1; i <= 40; ++i) {
+    const SE3d truth = path_pose(i);
+    const TrackingResult r = tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, truth)));
+    ASSERT_TRUE(r.tracked) << "frame " << i;
+    EXPECT_EQ(r.quality, TrackingQuality::good) << "frame " << i;
+    EXPECT_GT(r.fine_found, 200) << "frame " << i;
+    EXPECT_GE(r.fine_found, r.fine_searched / 2) << "frame " << i;
+    EXPECT_LT(position_error(r.T_c_w, truth), 2e-3) << "frame " << i;
+    EXPECT_LT(rotation_error_deg(r.T_c_w, truth), 0.05) << "frame " << i;
+    EXPECT_LT(r.inlier_rms_px, 0.5) << "frame " << i;
+    // Every search is accounted for.
+    const SearchCounts& c = r.fine_counts;
+    EXPECT_EQ(r.fine_searched, r.fine_found + c.no_candidate + c.score_too_high + c.subpixel_failed + c.outliers);
+  }
+}
+
+TEST_F(PlaneTracking, AsksForAKeyframeOnlyAfterMovingFarEnough) {
+  TrackerOptions options;
+  options.keyframe_min_frames = 5;
+  options.keyframe_min_distance = 0.05;  // x the plane depth: 0.1 m
+  Tracker tracker(camera_, map_, queue_, options);
+  tracker.start(SE3d(), 0);
+  int first_request = -1;
+  for (int i = 1; i <= 40 && first_request < 0; ++i) {
+    const TrackingResult r = tracker.track(
+        frame(static_cast<std::size_t>(i), test::render(plane_, camera_, path_pose(i))));
+    ASSERT_TRUE(r.tracked) << "frame " << i;
+    if (r.keyframe_requested) first_request = i;
+  }
+  // The first frame whose centre is more than 0.1 m from the keyframe's.
+  ASSERT_GT(first_request, 0);
+  const auto moved = [&](int i) { return path_pose(i).inverse().translation().norm(); };
+  EXPECT_GT(moved(first_request), 0.1);
+  EXPECT_LE(moved(first_request - 1), 0.1);
+  const auto candidate = queue_.try_pop();
+  ASSERT_TRUE(candidate);
+  EXPECT_EQ(candidate->frame.index, static_cast<std::size_t>(first_request));
+  EXPECT_GT(candidate->measurements.size(), 200u);
+  EXPECT_NE(candidate->frame.pyramid, nullptr) << "the keyframe shares the tracked frame's pyramid";
+  EXPECT_FALSE(candidate->turned_on_the_spot);
+}
+
+// Turning on the spot: PTAM's distance rule never fires, the angle rule does
+// once the optical axis has turned past keyframe_min_angle_deg.
+TEST_F(PlaneTracking, AsksForAKeyframeWhenTurningOnTheSpot) {
+  const auto turned = [](int i) { return SE3d(SO3d::exp(Eigen::Vector3d(0, 0.25 * i * M_PI / 180.0, 0)), Eigen::Vector3d::Zero()); };
+  for (const double min_angle : {5.0, 180.0}) {
+    TrackerOptions options;
+    options.keyframe_min_frames = 5;
+    options.keyframe_min_distance = 0.05;
+    options.keyframe_min_angle_deg = min_angle;
+    Tracker tracker(camera_, map_, queue_, options);
+    tracker.start(SE3d(), 0);
+    int first_request = -1;
+    for (int i = 1; i <= 30 && first_request < 0; ++i) {
+      const TrackingResult r =
+          tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, turned(i))));
+      ASSERT_TRUE(r.tracked) << "frame " << i;
+      if (r.keyframe_requested) first_request = i;
+    }
+    if (min_angle < 90) {
+      EXPECT_EQ(first_request, 21) << "the first frame turned more than 5 degrees (0.25 degrees per frame)";
+      const auto candidate = queue_.try_pop();
+      ASSERT_TRUE(candidate);
+      EXPECT_TRUE(candidate->turned_on_the_spot);
+    } else {
+      EXPECT_EQ(first_request, -1) << "no translation, and the angle rule is off";
+    }
+    while (queue_.try_pop()) {
+    }
+  }
+}
+
+TEST_F(PlaneTracking, LosesABlankFrameAndRelocalisesOnTheNextRealOne) {
+  Tracker tracker(camera_, map_, queue_, TrackerOptions{});
+  tracker.start(SE3d(), 0);
+  for (int i = 1; i <= 5; ++i)
+    ASSERT_TRUE(tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, path_pose(i))))
+                    .tracked);
+  const cv::Mat blank(camera_.height(), camera_.width(), CV_8UC1, cv::Scalar(0));
+  for (int i = 6; i <= 8; ++i) {
+    const TrackingResult r = tracker.track(frame(static_cast<std::size_t>(i), blank));
+    EXPECT_FALSE(r.tracked);
+    EXPECT_TRUE(tracker.is_lost());
+  }
+  // The camera moved on meanwhile (as if the blank frames were real).
+  const SE3d truth = path_pose(9);
+  const TrackingResult r = tracker.track(frame(9, test::render(plane_, camera_, truth)));
+  ASSERT_TRUE(r.tracked);
+  EXPECT_TRUE(r.relocalised);
+  EXPECT_FALSE(tracker.is_lost());
+  EXPECT_LT(position_error(r.T_c_w, truth), 2e-3);
+  EXPECT_LT(rotation_error_deg(r.T_c_w, truth), 0.05);
+}
+
+TEST_F(PlaneTracking, IsLostWhenNothingOfTheMapIsInView) {
+  Tracker tracker(camera_, map_, queue_, TrackerOptions{});
+  // Turned 90 degrees away: no point projects into the image.
+  const SE3d away(SO3d::exp(Eigen::Vector3d(0, M_PI / 2, 0)), Eigen::Vector3d::Zero());
+  tracker.start(away, 0);
+  const TrackingResult r = tracker.track(frame(1, test::render(plane_, camera_, away)));
+  EXPECT_FALSE(r.tracked);
+  EXPECT_EQ(r.quality, TrackingQuality::bad);
+  EXPECT_EQ(r.fine_counts.projected, 0);
+  EXPECT_TRUE(tracker.is_lost());
+}
+
+}  // namespace
+}  // namespace facadeslam

@@ -1,0 +1,282 @@
+#include "tracker/tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include <spdlog/spdlog.h>
+
+#include "core/image/small_blurry_image.hpp"
+#include "core/util/angles.hpp"
+#include "core/util/stopwatch.hpp"
+
+namespace facadeslam {
+
+const char* to_string(TrackingQuality quality) {
+  switch (quality) {
+    case TrackingQuality::good: return "good";
+    case TrackingQuality::dodgy: return "dodgy";
+    case TrackingQuality::bad: return "bad";
+  }
+  return "?";
+}
+
+namespace {
+
+// Border (level-0 pixels) a projection must keep so the 8x8 patch at level 0
+// fits; coarser levels are checked by the patch search itself.
+constexpr double kProjectionBorder = 4.0;
+
+}  // namespace
+
+struct Tracker::Candidate {
+  std::size_t point;            // index into the snapshot
+  Eigen::Vector2d pixel;        // predicted level-0 position
+  Eigen::Matrix2d warp;         // source-level pixel -> current level-0 pixels
+  int search_level;
+};
+
+Tracker::Tracker(Camera camera, const Map& map, KeyFrameQueue& keyframes, TrackerOptions options)
+    : camera_(std::move(camera)), map_(map), keyframes_(keyframes), options_(std::move(options)) {}
+
+void Tracker::start(const SE3d& T_c_w, std::size_t frame_index) {
+  started_ = true;
+  last_keyframe_turned_ = false;
+  T_c_w_ = T_c_w;
+  velocity_.setZero();
+  lost_frames_ = 0;
+  last_keyframe_frame_ = frame_index;
+}
+
+std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
+                                                     const SE3d& T_c_w) const {
+  std::vector<Candidate> out;
+  out.reserve(points.size());
+  const Eigen::Matrix3d R_c_w = T_c_w.rotation_matrix();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& g = points[i].geometry;
+    const Eigen::Vector3d p_c = T_c_w * g.p_w;
+    if (p_c.z() <= 1e-6) continue;
+    const Eigen::Vector2d px = camera_.project(p_c);
+    if (!camera_.in_image(px, kProjectionBorder)) continue;
+    const Eigen::Matrix2d warp = patch::patch_warp(p_c, R_c_w, g, camera_);
+    const int level = patch::choose_search_level(warp.determinant(), options_.templates);
+    if (level < 0) continue;
+    out.push_back({i, px, warp, level});
+  }
+  return out;
+}
+
+std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>& points,
+                                                const std::vector<Candidate>& candidates,
+                                                const patch::SearchImage& image, double radius_level0,
+                                                int max_points, int& searched, SearchCounts* counts) const {
+  std::vector<TrackedMeasurement> found;
+  found.reserve(static_cast<std::size_t>(std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(max_points))));
+  searched = 0;
+  for (const auto& c : candidates) {
+    if (searched >= max_points) break;
+    const auto& point = points[c.point].point;
+    // project_map chose the level; the template uses it as it is.
+    const patch::PatchTemplate tpl =
+        patch::make_patch_template_at_level(point->source(), c.warp, c.search_level, options_.templates);
+    if (!tpl.valid()) {
+      if (counts) ++counts->template_invalid;
+      continue;
+    }
+    ++searched;
+    const double radius = std::max(2.0, radius_level0 / ImagePyramid::level_scale(tpl.search_level));
+    const patch::PatchSearchResult r = patch::search_patch(tpl, image, c.pixel, radius, options_.search);
+    point->count_search(r.found());
+    if (r.found()) {
+      found.push_back({point, r.level, r.pixel_level0});
+    } else if (counts) {
+      counts->no_candidate += r.outcome == patch::SearchOutcome::kNoCandidate;
+      counts->score_too_high += r.outcome == patch::SearchOutcome::kScoreTooHigh;
+      counts->subpixel_failed += r.outcome == patch::SearchOutcome::kSubpixelFailed;
+    }
+  }
+  return found;
+}
+
+namespace {
+
+std::vector<PoseMeasurement> to_pose_measurements(const std::vector<PointSnapshot>& points,
+                                                           const std::vector<TrackedMeasurement>& found) {
+  // The snapshot's geometry, not the live point's: the map maker may move
+  // points while we track, and we must use one consistent copy.
+  std::unordered_map<const MapPoint*, const PointGeometry*> geometry;
+  geometry.reserve(points.size());
+  for (const auto& p : points) geometry.emplace(p.point.get(), &p.geometry);
+  std::vector<PoseMeasurement> out;
+  out.reserve(found.size());
+  for (const auto& m : found) out.push_back({geometry.at(m.point.get())->p_w, m.pixel, m.level});
+  return out;
+}
+
+}  // namespace
+
+std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const Frame& frame,
+                                                    TrackingResult& result) {
+  const std::vector<PointSnapshot> points = map_.snapshot_points();
+  // One row index of the frame's corners, shared by every search of both stages.
+  const patch::SearchImage image(*frame.pyramid);
+  std::mt19937_64 rng(options_.seed * 0x9E3779B97F4A7C15ULL + frame.index);
+  SE3d T_c_w = T_start;
+  double fine_radius = options_.fine_radius;
+
+  // Coarse stage: points at the coarse levels, wide radius.
+  if (options_.coarse_stage) {
+    const Stopwatch t0;
+    std::vector<Candidate> candidates = project_map(points, T_c_w);
+    std::erase_if(candidates, [&](const Candidate& c) { return c.search_level < options_.coarse_min_level; });
+    std::shuffle(candidates.begin(), candidates.end(), rng);
+    const auto found = search(points, candidates, image, options_.coarse_radius, options_.coarse_max_points,
+                              result.coarse_searched, nullptr);
+    result.coarse_found = static_cast<int>(found.size());
+    result.timings.coarse_ms = t0.elapsed_ms();
+    if (result.coarse_found >= options_.coarse_min_found) {
+      const Stopwatch t1;
+      const auto measurements = to_pose_measurements(points, found);
+      const auto update = update_pose(T_c_w, measurements, camera_, options_.pose);
+      if (update.ok) {
+        T_c_w = update.T_c_w;
+        fine_radius = options_.fine_radius_after_coarse;
+      }
+      result.timings.pose_ms += t1.elapsed_ms();
+    }
+  }
+
+  // Fine stage: all levels, tight radius, from the coarse pose.
+  const Stopwatch t0;
+  std::vector<Candidate> candidates = project_map(points, T_c_w);
+  std::shuffle(candidates.begin(), candidates.end(), rng);
+  result.fine_counts.projected = static_cast<int>(candidates.size());
+  std::vector<TrackedMeasurement> found = search(points, candidates, image, fine_radius, options_.fine_max_points,
+                                                 result.fine_searched, &result.fine_counts);
+  result.timings.fine_ms = t0.elapsed_ms();
+
+  const Stopwatch t1;
+  std::vector<TrackedMeasurement> inliers;
+  if (static_cast<int>(found.size()) >= 6) {
+    const auto measurements = to_pose_measurements(points, found);
+    const auto update = update_pose(T_c_w, measurements, camera_, options_.pose);
+    if (update.ok) {
+      T_c_w = update.T_c_w;
+      result.inlier_rms_px = update.inlier_rms_px;
+      for (std::size_t i = 0; i < found.size(); ++i)
+        if (update.inliers[i]) inliers.push_back(found[i]);
+    }
+  }
+  result.timings.pose_ms += t1.elapsed_ms();
+  result.fine_found = static_cast<int>(inliers.size());
+  result.fine_counts.outliers = static_cast<int>(found.size() - inliers.size());
+  result.T_c_w = T_c_w;
+
+  const double ratio =
+      result.fine_searched > 0 ? static_cast<double>(result.fine_found) / result.fine_searched : 0.0;
+  if (result.fine_found >= options_.good_found || (result.fine_found >= options_.min_found && ratio >= options_.quality_good))
+    result.quality = TrackingQuality::good;
+  else if (result.fine_found < options_.min_found || ratio < options_.quality_lost)
+    result.quality = TrackingQuality::bad;
+  else
+    result.quality = TrackingQuality::dodgy;
+  return inliers;
+}
+
+TrackingResult Tracker::track(const Frame& frame) {
+  TrackingResult result;
+  if (!started_) return result;
+
+  if (lost_frames_ >= options_.lost_frames_before_relocalising) {
+    const Stopwatch t0;
+    const cv::Mat sbi = make_small_blurry_image(*frame.pyramid);
+    const auto candidate =
+        find_relocalisation_candidate(sbi, map_.snapshot_keyframes(), camera_, options_.relocaliser);
+    result.timings.relocalise_ms = t0.elapsed_ms();
+    if (!candidate) {
+      ++lost_frames_;
+      return result;
+    }
+    auto inliers = track_from(candidate->T_c_w, frame, result);
+    if (result.quality == TrackingQuality::bad) {
+      ++lost_frames_;
+      return result;
+    }
+    spdlog::info("frame {}: relocalised against keyframe {} after {} lost frames", frame.index,
+                 candidate->keyframe->id(), lost_frames_);
+    lost_frames_ = 0;
+    velocity_.setZero();
+    T_c_w_ = result.T_c_w;
+    result.tracked = true;
+    result.relocalised = true;
+    return result;
+  }
+
+  const SE3d predicted = SE3d::exp(options_.velocity_decay * velocity_) * T_c_w_;
+  auto inliers = track_from(predicted, frame, result);
+  if (result.quality == TrackingQuality::bad) {
+    // PTAM: the next few frames are still tracked from the motion model (a
+    // blurred or briefly occluded frame says little about where the camera
+    // went), and only then does relocalisation take over. The bad frame's
+    // own pose update is not trusted.
+    ++lost_frames_;
+    T_c_w_ = predicted;
+    velocity_ *= options_.velocity_decay;
+    return result;
+  }
+  velocity_ = (result.T_c_w * T_c_w_.inverse()).log();
+  T_c_w_ = result.T_c_w;
+  lost_frames_ = 0;
+  result.tracked = true;
+
+  if (const KeyFrameReason reason = wants_keyframe(result, frame.index); reason != KeyFrameReason::none) {
+    request_keyframe(frame, result.T_c_w, std::move(inliers), reason);
+    result.keyframe_requested = true;
+  }
+  return result;
+}
+
+Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {
+  if (result.quality != TrackingQuality::good) return KeyFrameReason::none;
+  if (keyframes_.size() >= options_.keyframe_max_queue) return KeyFrameReason::none;
+  const std::size_t frames = frame_index - last_keyframe_frame_;
+  if (frames < static_cast<std::size_t>(std::min(options_.keyframe_min_frames, options_.keyframe_min_frames_turning)))
+    return KeyFrameReason::none;
+  // A keyframe near the camera (in units of its scene depth) that looks the
+  // same way already covers this view. Near keyframes that all look
+  // elsewhere: the camera has turned.
+  const Eigen::Vector3d centre = result.T_c_w.inverse().translation();
+  const Eigen::Vector3d axis = optical_axis_w(result.T_c_w);
+  const double min_cos = std::cos(deg_to_rad(options_.keyframe_min_angle_deg));
+  // After a turn the newest keyframes hold depth-prior points: the first
+  // small step away gives them a baseline, so it makes a keyframe sooner.
+  const double min_distance =
+      options_.keyframe_min_distance * (last_keyframe_turned_ ? options_.keyframe_distance_after_turn : 1.0);
+  bool near = false;
+  for (const KeyFrameSnapshot& kf : map_.snapshot_keyframes()) {
+    const double distance = (kf.centre_w() - centre).norm() / std::max(kf.mean_depth, 1e-9);
+    if (distance > min_distance) continue;
+    near = true;
+    if (kf.optical_axis_w().dot(axis) >= min_cos) return KeyFrameReason::none;
+  }
+  if (near) return frames >= static_cast<std::size_t>(options_.keyframe_min_frames_turning) ? KeyFrameReason::turned
+                                                                                            : KeyFrameReason::none;
+  return frames >= static_cast<std::size_t>(options_.keyframe_min_frames) ? KeyFrameReason::moved
+                                                                          : KeyFrameReason::none;
+}
+
+void Tracker::request_keyframe(const Frame& frame, const SE3d& T_c_w,
+                               std::vector<TrackedMeasurement> measurements, KeyFrameReason reason) {
+  KeyFrameCandidate candidate;
+  candidate.frame = frame;  // shares the images
+  candidate.T_c_w = T_c_w;
+  candidate.measurements = std::move(measurements);
+  candidate.turned_on_the_spot = reason == KeyFrameReason::turned;
+  last_keyframe_turned_ = candidate.turned_on_the_spot;
+  keyframes_.push(std::move(candidate));
+  last_keyframe_frame_ = frame.index;
+}
+
+}  // namespace facadeslam

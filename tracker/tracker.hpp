@@ -1,0 +1,104 @@
+#pragma once
+// PTAM's tracker: every frame, project the map into the image, find the
+// points' patches coarse-to-fine, update the pose robustly, judge the
+// tracking quality, ask the map maker for keyframes, and relocalise when lost.
+//
+// The tracker runs on the caller's thread (the replay loop). It reads the map
+// (a const Map: it never changes it) through snapshots and talks to the map
+// maker only through the KeyFrameQueue. Deterministic: the only randomness,
+// which points to search when there are too many, is seeded per frame.
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "core/camera/camera.hpp"
+#include "core/lie/se3.hpp"
+#include "core/image/frame.hpp"
+#include "core/map/keyframe_candidate.hpp"
+#include "core/map/map.hpp"
+#include "core/patch/search_image.hpp"
+#include "tracker/tracker_options.hpp"
+
+namespace facadeslam {
+
+enum class TrackingQuality { good, dodgy, bad };
+const char* to_string(TrackingQuality quality);
+
+struct StageTimings {
+  double coarse_ms = 0, fine_ms = 0, pose_ms = 0, relocalise_ms = 0;
+};
+
+// Why the fine stage's searches failed (diagnostics, --verbose).
+struct SearchCounts {
+  int projected = 0;         // map points projecting into the image with a usable warp
+  int template_invalid = 0;  // no template (outside the source image, textureless)
+  int no_candidate = 0;      // no FAST corner within the radius
+  int score_too_high = 0;    // best corner's ZMSSD above the bound
+  int subpixel_failed = 0;   // sub-pixel refinement did not converge
+  int outliers = 0;          // found, then rejected by the robust pose update
+};
+
+struct TrackingResult {
+  bool tracked = false;        // pose is valid for this frame
+  TrackingQuality quality = TrackingQuality::bad;
+  SE3d T_c_w;
+  bool relocalised = false;    // tracking resumed on this frame after a loss
+  bool keyframe_requested = false;
+  int coarse_searched = 0, coarse_found = 0;
+  int fine_searched = 0, fine_found = 0;
+  double inlier_rms_px = 0;
+  SearchCounts fine_counts;
+  StageTimings timings;
+};
+
+class Tracker {
+ public:
+  Tracker(Camera camera, const Map& map, KeyFrameQueue& keyframes, TrackerOptions options);
+
+  // Starts tracking from a known pose (after initialisation or map loading).
+  void start(const SE3d& T_c_w, std::size_t frame_index);
+  // The pose is unknown (a loaded map): relocalise from the next frame.
+  void mark_lost() { lost_frames_ = std::max(lost_frames_, options_.lost_frames_before_relocalising); }
+
+  // `frame` must have its pyramid; a keyframe made from it shares its images.
+  TrackingResult track(const Frame& frame);
+
+  bool is_lost() const { return lost_frames_ > 0; }
+  bool started() const { return started_; }
+  const SE3d& pose() const { return T_c_w_; }
+  const TrackerOptions& options() const { return options_; }
+
+ private:
+  struct Candidate;  // a projected map point (tracker.cpp)
+
+  std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w) const;
+  // Searches up to `max_points` of `candidates` (in order) in the frame's
+  // search image and returns the measurements found; `searched` counts the
+  // attempts, `counts` (optional) why the others failed.
+  std::vector<TrackedMeasurement> search(const std::vector<PointSnapshot>& points,
+                                         const std::vector<Candidate>& candidates,
+                                         const patch::SearchImage& image, double radius_level0, int max_points,
+                                         int& searched, SearchCounts* counts) const;
+  // The coarse + fine stages and pose updates from `T_start`; fills `result`.
+  std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const Frame& frame,
+                                             TrackingResult& result);
+  enum class KeyFrameReason { none, moved, turned };
+  KeyFrameReason wants_keyframe(const TrackingResult& result, std::size_t frame_index) const;
+  void request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vector<TrackedMeasurement> measurements,
+                        KeyFrameReason reason);
+
+  Camera camera_;
+  const Map& map_;
+  KeyFrameQueue& keyframes_;
+  TrackerOptions options_;
+
+  bool started_ = false;
+  SE3d T_c_w_;
+  Eigen::Matrix<double, 6, 1> velocity_ = Eigen::Matrix<double, 6, 1>::Zero();
+  int lost_frames_ = 0;
+  std::size_t last_keyframe_frame_ = 0;
+  bool last_keyframe_turned_ = false;
+};
+
+}  // namespace facadeslam

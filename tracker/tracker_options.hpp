@@ -1,0 +1,66 @@
+#pragma once
+// Every tunable of the tracker, with PTAM's values as defaults. Loaded from
+// the `tracker:` section of configs/slam.yaml (slam/slam_options.hpp).
+#include <cstdint>
+
+#include "core/image/image_pyramid.hpp"
+#include "core/patch/patch_search.hpp"
+#include "core/patch/patch_warp.hpp"
+#include "tracker/pose_update.hpp"
+#include "tracker/relocaliser.hpp"
+
+namespace facadeslam {
+
+struct TrackerOptions {
+  PyramidOptions pyramid;
+  patch::TemplateOptions templates;
+  patch::SearchOptions search;
+  PoseUpdateOptions pose;
+  RelocaliserOptions relocaliser;
+
+  // Coarse stage: a few points found at the coarse levels, searched over a
+  // wide radius, to survive fast motion. Radii are in level-0 pixels.
+  bool coarse_stage = true;
+  int coarse_min_level = 2;       // points searched at this level or above
+  int coarse_max_points = 60;
+  int coarse_min_found = 10;      // below this the coarse pose is not used
+  double coarse_radius = 30.0;
+  // Fine stage: up to this many points over all levels, tight radius.
+  int fine_max_points = 1000;
+  double fine_radius = 8.0;       // without a coarse stage
+  double fine_radius_after_coarse = 5.0;
+
+  // Motion model: constant velocity, decayed (PTAM).
+  double velocity_decay = 0.9;
+
+  // Tracking quality = found / searched in the fine stage.
+  double quality_good = 0.3;
+  double quality_lost = 0.13;
+  int min_found = 20;             // fewer points found is a failure whatever the ratio
+  // This many inliers is good tracking whatever the ratio: around a 3D
+  // object (templeRing) half of the projected points are occluded or seen
+  // from too far round, so the ratio stays low while hundreds of points
+  // still pin the pose down.
+  int good_found = 150;
+  // Bad frames in a row still tracked from the motion model before the
+  // relocaliser takes over (PTAM's NUM_LOST_FRAMES).
+  int lost_frames_before_relocalising = 3;
+
+  // Keyframes: only when tracking is good, enough frames have passed, and no
+  // keyframe sees the scene as the camera does now: every keyframe is either
+  // far away relative to its scene depth (PTAM's rule) or looks in another
+  // direction. The second half adds keyframes when the camera turns on the
+  // spot, which PTAM never does: without them the map ends at the edge of
+  // the last keyframe's view and tracking is lost once the camera has turned
+  // past it.
+  int keyframe_min_frames = 20;
+  double keyframe_min_distance = 0.12;  // x the nearest keyframe's mean scene depth
+  double keyframe_min_angle_deg = 15.0; // between optical axes
+  int keyframe_min_frames_turning = 10; // turning is fast: the view leaves the map in a second
+  double keyframe_distance_after_turn = 0.25;  // x keyframe_min_distance for the first keyframe after a turn
+  std::size_t keyframe_max_queue = 3;   // map maker busy: wait
+
+  std::uint64_t seed = 1;  // point-sampling order; fixed for reproducible runs
+};
+
+}  // namespace facadeslam
