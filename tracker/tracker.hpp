@@ -65,9 +65,6 @@ class Tracker {
   TrackingResult track(const Frame& frame);
 
   bool is_lost() const { return lost_frames_ > 0; }
-  bool started() const { return started_; }
-  const SE3d& pose() const { return T_c_w_; }
-  const TrackerOptions& options() const { return options_; }
 
  private:
   struct Candidate;  // a projected map point (tracker.cpp)
