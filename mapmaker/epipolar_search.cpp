@@ -65,7 +65,6 @@ NewPoints epipolar_new_points(Map& map, const Camera& camera, const std::shared_
 
   for (int level = 0; level < kPyramidLevels; ++level) {
     const double scale = static_cast<double>(1 << level);
-    const auto& other_level = other.pyramid()->level(level);
     NewPointCandidates candidates(newest, level, options.min_distance_to_measurement);
     int tried = 0;
     for (const Corner& c : candidates.corners()) {
@@ -75,20 +74,34 @@ NewPoints epipolar_new_points(Map& map, const Camera& camera, const std::shared_
       ++tried;
       ++local.candidates;
 
-      // The patch, as a template searched at the same level of the other keyframe.
+      // The patch as the other keyframe sees it. Warped (options.warp_templates):
+      // as if the point lay at the new keyframe's mean depth on a plane facing
+      // it, which is what forward motion needs (a car at 10 Hz scales patches
+      // by 1.3-1.5 between keyframes three frames apart); the warp also picks
+      // the level of the other keyframe to search. Otherwise PTAM's identity
+      // warp at the same level.
       const Eigen::Vector2d pixel0 = ImagePyramid::level_to_level0(at, level);
       const PatchSource source{newest.id(), newest.pyramid(), level, pixel0};
-      const patch::PatchTemplate tpl =
-          patch::make_patch_template(source, Eigen::Matrix2d::Identity() * scale, {});
-      if (!tpl.valid() || tpl.search_level != level) continue;
+      const Eigen::Vector3d ray = camera.unproject(pixel0);
+      Eigen::Matrix2d warp = Eigen::Matrix2d::Identity() * scale;
+      if (options.warp_templates) {
+        const Eigen::Vector3d p_w = T_new_w.inverse() * (ray * mean_depth);
+        const Eigen::Vector3d p_other = T_other_w * p_w;
+        if (p_other.z() <= 1e-6) continue;
+        warp = patch::patch_warp(p_other, T_other_w.rotation_matrix(),
+                                 source_geometry(camera, T_new_w, source, p_w), camera);
+      }
+      const patch::PatchTemplate tpl = patch::make_patch_template(source, warp, {});
+      if (!tpl.valid() || (!options.warp_templates && tpl.search_level != level)) continue;
+      const int other_level_index = tpl.search_level;
+      const auto& other_level = other.pyramid()->level(other_level_index);
 
       // The depth range's segment of the epipolar line in the other keyframe.
-      const Eigen::Vector3d ray = camera.unproject(pixel0);
       const Eigen::Vector3d near_p = T_other_new * (ray * depth_min);
       const Eigen::Vector3d far_p = T_other_new * (ray * depth_max);
       if (near_p.z() <= 1e-6 || far_p.z() <= 1e-6) continue;
-      const Eigen::Vector2d seg_a = ImagePyramid::level0_to_level(camera.project(near_p), level);
-      const Eigen::Vector2d seg_b = ImagePyramid::level0_to_level(camera.project(far_p), level);
+      const Eigen::Vector2d seg_a = ImagePyramid::level0_to_level(camera.project(near_p), other_level_index);
+      const Eigen::Vector2d seg_b = ImagePyramid::level0_to_level(camera.project(far_p), other_level_index);
 
       float best = max_zmssd;
       Eigen::Vector2i best_corner(-1, -1);
@@ -105,19 +118,35 @@ NewPoints epipolar_new_points(Map& map, const Camera& camera, const std::shared_
           best_corner = {it->x, it->y};
         }
       }
+      if (options.dense_line_search) {
+        // Every pixel along the segment too: under a scale change the other
+        // keyframe's FAST corners are not where the patch's corner is.
+        const double length = (seg_b - seg_a).norm();
+        const int steps = static_cast<int>(std::min(length, 2000.0));
+        for (int k = 0; k <= steps; ++k) {
+          const Eigen::Vector2d q = steps == 0 ? seg_a : seg_a + (seg_b - seg_a) * (static_cast<double>(k) / steps);
+          const int x = static_cast<int>(std::lround(q.x())), y = static_cast<int>(std::lround(q.y()));
+          const float score = patch::zmssd_at(tpl, other_level.image, x, y);
+          if (score < best) {
+            best = score;
+            best_corner = {x, y};
+          }
+        }
+      }
       if (best_corner.x() < 0) continue;
       ++local.matched;
 
       const auto refined = patch::refine_subpixel(tpl, other_level.image, best_corner.cast<double>(), refine_options);
       if (!refined.converged) continue;
-      const Eigen::Vector2d other_pixel0 = ImagePyramid::level_to_level0(refined.pixel, level);
+      const Eigen::Vector2d other_pixel0 = ImagePyramid::level_to_level0(refined.pixel, other_level_index);
+      const double other_scale = static_cast<double>(1 << other_level_index);
       const Eigen::Vector3d other_ray = camera.unproject(other_pixel0);
 
       const auto p_w = triangulate_rays(T_new_w, ray, T_other_w, other_ray);
       if (!p_w) continue;
       const Eigen::Vector3d in_new = T_new_w * *p_w, in_other = T_other_w * *p_w;
       const double err_new = (camera.project(in_new) - pixel0).norm() / scale;
-      const double err_other = (camera.project(in_other) - other_pixel0).norm() / scale;
+      const double err_other = (camera.project(in_other) - other_pixel0).norm() / other_scale;
       if (err_new > options.max_reprojection_px || err_other > options.max_reprojection_px) continue;
       const Eigen::Vector3d to_new = T_new_w.inverse().translation() - *p_w;
       const Eigen::Vector3d to_other = T_other_w.inverse().translation() - *p_w;
@@ -133,7 +162,7 @@ NewPoints epipolar_new_points(Map& map, const Camera& camera, const std::shared_
       // candidates look at measurements of their own and the next coarser
       // level only, so the later levels' searches do not miss them.
       created.observations.push_back({newest_kf, point->id(), {level, pixel0, true}});
-      created.observations.push_back({other_kf, point->id(), {level, other_pixel0, false}});
+      created.observations.push_back({other_kf, point->id(), {other_level_index, other_pixel0, false}});
       candidates.take(at);
       created.points.push_back(std::move(point));
       ++local.triangulated;

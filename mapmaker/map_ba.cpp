@@ -96,6 +96,9 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
       const auto source_kf = edit.keyframe(p->source().keyframe_id);
       if (!source_kf) continue;
       edit.set_geometry(*p, source_geometry(camera, source_kf->T_c_w(), p->source(), problem.points[i].p_w));
+      if (p->view().keyframe_id == p->source().keyframe_id) continue;
+      if (const auto view_kf = edit.keyframe(p->view().keyframe_id))
+        edit.set_view(*p, p->view(), source_geometry(camera, view_kf->T_c_w(), p->view(), problem.points[i].p_w));
     }
   });
   return report;

@@ -128,6 +128,15 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
                                        std::move(measurements));
   map_.add_keyframe(kf);
   update_depth_stats(*kf);
+  if (options_.newest_view_templates)
+    map_.update([&](MapEditor& edit) {
+      for (const auto& [id, m] : kf->measurements()) {
+        const auto p = edit.point(id);
+        if (!p) continue;
+        const PatchSource view{kf->id(), kf->pyramid(), m.level, m.pixel};
+        edit.set_view(*p, view, source_geometry(camera_, kf->T_c_w(), view, p->position()));
+      }
+    });
 
   NewPoints created;
   if (const auto other = epipolar_partner(*kf)) {

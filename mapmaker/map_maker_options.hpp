@@ -21,6 +21,14 @@ struct EpipolarSearchOptions {
   float max_zmssd_per_pixel = 400.f;         // patch match bound (grey levels^2 per pixel)
   double max_reprojection_px = 2.0;          // level pixels, in both views after triangulation
   double min_parallax_deg = 0.5;             // rays must not be near parallel (x 2^level)
+  // Warp each template into the other keyframe at the mean scene depth (on a
+  // plane facing the new keyframe) instead of comparing same-level patches
+  // unwarped: forward motion scales patches between keyframes.
+  bool warp_templates = true;
+  // Score every pixel along the epipolar segment, not only the other
+  // keyframe's FAST corners near it (PTAM): a corner seen at another scale
+  // is often not a FAST corner there.
+  bool dense_line_search = true;
 };
 
 struct MapMakerOptions {
@@ -48,6 +56,9 @@ struct MapMakerOptions {
   // Synchronous mode: a global BA after every this many keyframes (the
   // threaded map maker runs it whenever it is idle instead).
   int sync_global_ba_every = 5;
+  // The tracker searches for each point's patch as the newest keyframe that
+  // measured it saw it (MapPoint::view), not as its source keyframe did.
+  bool newest_view_templates = true;
 };
 
 }  // namespace facadeslam

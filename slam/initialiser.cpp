@@ -1,5 +1,7 @@
 #include "slam/initialiser.hpp"
 
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
 
 namespace facadeslam {
@@ -13,7 +15,7 @@ void Initialiser::restart(const Frame& frame, const char* why) {
   two_view_.reset(frame.pyramid->level(0).image, frame.pyramid->level(0).corners, frame.timestamp);
 }
 
-std::optional<SE3d> Initialiser::add_frame(const Frame& frame) {
+std::optional<StartPose> Initialiser::add_frame(const Frame& frame) {
   if (!reference_) {
     restart(frame, "first frame");
     return std::nullopt;
@@ -28,8 +30,14 @@ std::optional<SE3d> Initialiser::add_frame(const Frame& frame) {
   const TwoViewResult& result = two_view_.result();
   const auto T_c_w = map_maker_.initialise({*reference_, frame, result.T_c1_c0, result.points_c0, result.pixels0,
                                             result.pixels1, result.median_parallax_deg, to_string(result.model)});
-  if (!T_c_w) restart(frame, "the map maker discarded the initial map");
-  return T_c_w;
+  if (!T_c_w) {
+    restart(frame, "the map maker discarded the initial map");
+    return std::nullopt;
+  }
+  // The reference is the first keyframe, at the origin: T_c_w is the motion
+  // over the frames tracked since it.
+  const int frames = std::max(1, two_view_.frames_since_reset());
+  return StartPose{*T_c_w, T_c_w->log() / frames};
 }
 
 }  // namespace facadeslam

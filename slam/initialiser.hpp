@@ -20,13 +20,23 @@
 
 namespace facadeslam {
 
+// The first map's second camera, where tracking starts.
+struct StartPose {
+  SE3d T_c_w;
+  // The camera's motion per frame over the two views (the tangent of
+  // T_second_first divided by the frames between them): the tracker's
+  // motion model starts from it instead of from rest, which a car at 10 Hz
+  // (a metre per frame) needs.
+  Eigen::Matrix<double, 6, 1> velocity = Eigen::Matrix<double, 6, 1>::Zero();
+};
+
 class Initialiser {
  public:
   Initialiser(const Camera& camera, const TwoViewOptions& options, MapMaker& map_maker);
 
   // Feeds one frame (with its pyramid). Returns the frame's pose once the
   // first map has been built from the reference and this frame.
-  std::optional<SE3d> add_frame(const Frame& frame);
+  std::optional<StartPose> add_frame(const Frame& frame);
 
  private:
   void restart(const Frame& frame, const char* why);

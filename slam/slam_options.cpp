@@ -30,9 +30,13 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
       c.get_int("keyframe_min_frames_turning", Range::closed(1, 10000), t.keyframe_min_frames_turning);
   t.keyframe_distance_after_turn =
       c.get_double("keyframe_distance_after_turn", Range::positive(1), t.keyframe_distance_after_turn);
+  t.keyframe_min_overlap = c.get_double("keyframe_min_overlap", Range::closed(0, 1), t.keyframe_min_overlap);
+  t.keyframe_min_frames_overlap =
+      c.get_int("keyframe_min_frames_overlap", Range::closed(1, 10000), t.keyframe_min_frames_overlap);
   t.keyframe_min_angle_deg = c.get_double("keyframe_min_angle_deg", Range::closed(1, 180), t.keyframe_min_angle_deg);
   t.search.max_zmssd_per_pixel =
       static_cast<float>(c.get_double("max_zmssd_per_pixel", Range::positive(65025), t.search.max_zmssd_per_pixel));
+  t.search.dense_radius = c.get_int("dense_search_radius_px", Range::closed(0, 16), t.search.dense_radius);
   t.seed = static_cast<std::uint64_t>(c.get_int("seed", Range::closed(0, 2147483647), static_cast<int>(t.seed)));
   c.finish();
 }
@@ -48,6 +52,9 @@ void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m
   m.local_ba.max_iterations = c.get_int("local_ba_iterations", Range::closed(1, 1000), m.local_ba.max_iterations);
   m.global_ba.max_iterations = c.get_int("global_ba_iterations", Range::closed(1, 1000), m.global_ba.max_iterations);
   m.sync_global_ba_every = c.get_int("sync_global_ba_every", Range::closed(1, 1000), m.sync_global_ba_every);
+  m.newest_view_templates = c.get_bool("newest_view_templates", m.newest_view_templates);
+  m.epipolar.warp_templates = c.get_bool("epipolar_warp_templates", m.epipolar.warp_templates);
+  m.epipolar.dense_line_search = c.get_bool("epipolar_dense_line_search", m.epipolar.dense_line_search);
   m.epipolar.max_zmssd_per_pixel = static_cast<float>(
       c.get_double("epipolar_max_zmssd_per_pixel", Range::positive(65025), m.epipolar.max_zmssd_per_pixel));
   m.epipolar_partner.min_baseline =

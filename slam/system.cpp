@@ -28,9 +28,9 @@ System::System(Camera camera, SlamOptions options)
 
 System::~System() { map_maker_.stop(); }
 
-void System::start_tracking(const SE3d& T_c_w, std::size_t frame_index) {
+void System::start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity) {
   initialised_ = true;
-  tracker_.start(T_c_w, frame_index);
+  tracker_.start(T_c_w, frame_index, velocity);
   if (!options_.synchronous) map_maker_.start();
 }
 
@@ -39,7 +39,7 @@ void System::load_map(const std::filesystem::path& path) {
   if (map_.keyframe_count() < 2 || map_.point_count() == 0)
     fail_file(path, "the map has no keyframes or points to track against");
   // Nothing is known of the camera yet: the tracker starts lost and relocalises.
-  start_tracking(map_.snapshot_keyframes().back().T_c_w, 0);
+  start_tracking(map_.snapshot_keyframes().back().T_c_w, 0, Eigen::Matrix<double, 6, 1>::Zero());
   tracker_.mark_lost();
 }
 
@@ -53,11 +53,11 @@ FrameReport System::process(Frame frame) {
 
   if (!initialised_) {
     report.status = FrameStatus::initialising;
-    if (const auto T_c_w = initialiser_.add_frame(frame)) {
-      start_tracking(*T_c_w, frame.index);
+    if (const auto start = initialiser_.add_frame(frame)) {
+      start_tracking(start->T_c_w, frame.index, start->velocity);
       report.status = FrameStatus::initialised;
       report.has_pose = true;
-      report.T_c_w = *T_c_w;
+      report.T_c_w = start->T_c_w;
     }
   } else {
     report.tracking = tracker_.track(frame);

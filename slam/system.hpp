@@ -55,7 +55,7 @@ class System {
   MapMakerStats map_maker_stats() const { return map_maker_.stats(); }
 
  private:
-  void start_tracking(const SE3d& T_c_w, std::size_t frame_index);
+  void start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity);
   // One debug line per tracked frame: search outcomes, quality, stage times.
   void log_tracking(const FrameReport& report) const;
 

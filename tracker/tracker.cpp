@@ -40,11 +40,12 @@ struct Tracker::Candidate {
 Tracker::Tracker(Camera camera, const Map& map, KeyFrameQueue& keyframes, TrackerOptions options)
     : camera_(std::move(camera)), map_(map), keyframes_(keyframes), options_(std::move(options)) {}
 
-void Tracker::start(const SE3d& T_c_w, std::size_t frame_index) {
+void Tracker::start(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity) {
   started_ = true;
   last_keyframe_turned_ = false;
   T_c_w_ = T_c_w;
-  velocity_.setZero();
+  velocity_ = velocity;
+  found_at_keyframe_ = 0;
   lost_frames_ = 0;
   last_keyframe_frame_ = frame_index;
 }
@@ -60,7 +61,7 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
     if (p_c.z() <= 1e-6) continue;
     const Eigen::Vector2d px = camera_.project(p_c);
     if (!camera_.in_image(px, kProjectionBorder)) continue;
-    const Eigen::Matrix2d warp = patch::patch_warp(p_c, R_c_w, g, camera_);
+    const Eigen::Matrix2d warp = patch::patch_warp(p_c, R_c_w, points[i].view_geometry, camera_);
     const int level = patch::choose_search_level(warp.determinant(), options_.templates);
     if (level < 0) continue;
     out.push_back({i, px, warp, level});
@@ -80,7 +81,7 @@ std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>
     const auto& point = points[c.point].point;
     // project_map chose the level; the template uses it as it is.
     const patch::PatchTemplate tpl =
-        patch::make_patch_template_at_level(point->source(), c.warp, c.search_level, options_.templates);
+        patch::make_patch_template_at_level(points[c.point].view, c.warp, c.search_level, options_.templates);
     if (!tpl.valid()) {
       if (counts) ++counts->template_invalid;
       continue;
@@ -230,6 +231,7 @@ TrackingResult Tracker::track(const Frame& frame) {
   T_c_w_ = result.T_c_w;
   lost_frames_ = 0;
   result.tracked = true;
+  if (found_at_keyframe_ == 0) found_at_keyframe_ = result.fine_found;
 
   if (const KeyFrameReason reason = wants_keyframe(result, frame.index); reason != KeyFrameReason::none) {
     request_keyframe(frame, result.T_c_w, std::move(inliers), reason);
@@ -239,9 +241,16 @@ TrackingResult Tracker::track(const Frame& frame) {
 }
 
 Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {
-  if (result.quality != TrackingQuality::good) return KeyFrameReason::none;
   if (keyframes_.size() >= options_.keyframe_max_queue) return KeyFrameReason::none;
   const std::size_t frames = frame_index - last_keyframe_frame_;
+  // The view is leaving the map (forward motion, a fast turn): a keyframe
+  // as soon as the points found fall below a share of those found when the
+  // last keyframe was made, even on dodgy tracking, which is what comes
+  // next otherwise.
+  if (result.quality != TrackingQuality::bad && frames >= static_cast<std::size_t>(options_.keyframe_min_frames_overlap) &&
+      result.fine_found < options_.keyframe_min_overlap * found_at_keyframe_)
+    return KeyFrameReason::moved;
+  if (result.quality != TrackingQuality::good) return KeyFrameReason::none;
   if (frames < static_cast<std::size_t>(std::min(options_.keyframe_min_frames, options_.keyframe_min_frames_turning)))
     return KeyFrameReason::none;
   // A keyframe near the camera (in units of its scene depth) that looks the
@@ -275,6 +284,7 @@ void Tracker::request_keyframe(const Frame& frame, const SE3d& T_c_w,
   candidate.measurements = std::move(measurements);
   candidate.turned_on_the_spot = reason == KeyFrameReason::turned;
   last_keyframe_turned_ = candidate.turned_on_the_spot;
+  found_at_keyframe_ = static_cast<int>(candidate.measurements.size());
   keyframes_.push(std::move(candidate));
   last_keyframe_frame_ = frame.index;
 }

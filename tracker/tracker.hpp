@@ -56,8 +56,10 @@ class Tracker {
  public:
   Tracker(Camera camera, const Map& map, KeyFrameQueue& keyframes, TrackerOptions options);
 
-  // Starts tracking from a known pose (after initialisation or map loading).
-  void start(const SE3d& T_c_w, std::size_t frame_index);
+  // Starts tracking from a known pose (after initialisation or map loading)
+  // and motion per frame (the motion model's first prediction).
+  void start(const SE3d& T_c_w, std::size_t frame_index,
+             const Eigen::Matrix<double, 6, 1>& velocity = Eigen::Matrix<double, 6, 1>::Zero());
   // The pose is unknown (a loaded map): relocalise from the next frame.
   void mark_lost() { lost_frames_ = std::max(lost_frames_, options_.lost_frames_before_relocalising); }
 
@@ -96,6 +98,7 @@ class Tracker {
   int lost_frames_ = 0;
   std::size_t last_keyframe_frame_ = 0;
   bool last_keyframe_turned_ = false;
+  int found_at_keyframe_ = 0;  // points found in the frame that made the last keyframe
 };
 
 }  // namespace facadeslam

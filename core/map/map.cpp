@@ -30,6 +30,16 @@ void MapEditor::set_measurement(KeyFrame& keyframe, MapPoint::Id point, const Me
   keyframe.measurements_[point] = measurement;
 }
 
+void MapEditor::set_geometry(MapPoint& point, const PointGeometry& geometry) {
+  point.geometry_ = geometry;
+  if (point.view_.keyframe_id == point.source_.keyframe_id) point.view_geometry_ = geometry;
+}
+
+void MapEditor::set_view(MapPoint& point, const PatchSource& view, const PointGeometry& geometry) {
+  point.view_ = view;
+  point.view_geometry_ = geometry;
+}
+
 bool MapEditor::erase_measurement(KeyFrame& keyframe, MapPoint::Id point) {
   return keyframe.measurements_.erase(point) > 0;
 }
@@ -79,7 +89,7 @@ std::vector<PointSnapshot> Map::snapshot_points() const {
   std::vector<PointSnapshot> out;
   out.reserve(points_.size());
   for (const auto& [id, p] : points_)
-    if (!p->is_bad()) out.push_back({p, p->geometry()});
+    if (!p->is_bad()) out.push_back({p, p->geometry(), p->view(), p->view_geometry()});
   return out;
 }
 

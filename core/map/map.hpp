@@ -33,6 +33,8 @@ namespace facadeslam {
 struct PointSnapshot {
   std::shared_ptr<MapPoint> point;
   PointGeometry geometry;
+  PatchSource view;              // MapPoint::view()
+  PointGeometry view_geometry;
 };
 
 // A keyframe with a copy of what the map maker may change, taken under the
@@ -85,7 +87,9 @@ class MapEditor : public MapView {
   void set_measurement(KeyFrame& keyframe, MapPoint::Id point, const Measurement& measurement);
   // Returns whether there was one.
   bool erase_measurement(KeyFrame& keyframe, MapPoint::Id point);
-  void set_geometry(MapPoint& point, const PointGeometry& geometry) { point.geometry_ = geometry; }
+  // Moves the point; a view still at its source keyframe moves with it.
+  void set_geometry(MapPoint& point, const PointGeometry& geometry);
+  void set_view(MapPoint& point, const PatchSource& view, const PointGeometry& geometry);
   void mark_bad(MapPoint& point) { point.bad_.store(true, std::memory_order_release); }
 
  private:

@@ -5,7 +5,8 @@
 namespace facadeslam {
 
 MapPoint::MapPoint(Id id, PatchSource source, const PointGeometry& geometry)
-    : id_(id), source_(std::move(source)), geometry_(geometry), packed_label_(kUnlabelled) {}
+    : id_(id), source_(std::move(source)), geometry_(geometry), view_(source_), view_geometry_(geometry),
+      packed_label_(kUnlabelled) {}
 
 // Label and confidence travel in one 64-bit atomic so a reader never sees a
 // label paired with another label's confidence.

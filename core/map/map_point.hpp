@@ -59,6 +59,14 @@ class MapPoint {
   // Owned by the Map (see above).
   const PointGeometry& geometry() const { return geometry_; }
   const Eigen::Vector3d& position() const { return geometry_.p_w; }
+  // The patch the tracker searches for and its geometry: the point as the
+  // newest keyframe that measured it saw it (its source until another
+  // keyframe does). Under forward motion the source's view soon differs so
+  // much (scale, obliquity) that its patch no longer matches; a recent view
+  // does (as SVO takes the nearest keyframe's patch). Bundle adjustment and
+  // the map file keep using the source.
+  const PatchSource& view() const { return view_; }
+  const PointGeometry& view_geometry() const { return view_geometry_; }
 
   // Lock-free; written by the semantic worker, read by the tracker and outputs.
   SemanticLabel label() const;
@@ -83,6 +91,8 @@ class MapPoint {
   const Id id_;
   const PatchSource source_;
   PointGeometry geometry_;
+  PatchSource view_;
+  PointGeometry view_geometry_;
   std::atomic<std::uint64_t> packed_label_;  // label in the low byte, confidence bits above
   std::atomic<bool> bad_{false};
   std::atomic<std::uint32_t> searched_{0}, found_{0};

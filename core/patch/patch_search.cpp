@@ -357,14 +357,38 @@ PatchSearchResult search_rows(const PatchTemplate& tpl, const ImagePyramid& pyra
       }
     }
   }
-  if (!best_corner) {
+  Eigen::Vector2i best_pixel = best_corner ? Eigen::Vector2i(best_corner->x, best_corner->y) : Eigen::Vector2i(-1, -1);
+  const float bound = options.max_zmssd_per_pixel * kPatchPixels;
+  if (options.dense_radius > 0 && (!best_corner || best > bound)) {
+    // No FAST corner matches: every pixel near the prediction. Under strong
+    // scale change or oblique views the point's corner is often not a FAST
+    // corner in this frame, while a good motion model puts it within a few
+    // pixels of the prediction.
+    const double dense = std::min(radius, static_cast<double>(options.dense_radius));
+    const int dx_lo = std::max(x_lo, static_cast<int>(std::ceil(p.x() - dense)));
+    const int dx_hi = std::min(x_hi, static_cast<int>(std::floor(p.x() + dense)));
+    const int dy_lo = std::max(y_lo, static_cast<int>(std::ceil(p.y() - dense)));
+    const int dy_hi = std::min(y_hi, static_cast<int>(std::floor(p.y() + dense)));
+    for (int y = dy_lo; y <= dy_hi; ++y) {
+      const std::uint8_t* top = data + static_cast<std::size_t>(y + kFirst) * step;
+      for (int x = dx_lo; x <= dx_hi; ++x) {
+        ++result.candidates;
+        const float score = zmssd_block(tpl, top + (x + kFirst), step);
+        if (score < best) {
+          best = score;
+          best_pixel = {x, y};
+        }
+      }
+    }
+  }
+  if (best_pixel.x() < 0) {
     result.outcome = SearchOutcome::kNoCandidate;
     return result;
   }
-  result.corner = {best_corner->x, best_corner->y};
+  result.corner = best_pixel;
   result.zmssd = best;
   result.pixel_level = result.corner.cast<double>();
-  if (best > options.max_zmssd_per_pixel * kPatchPixels) {
+  if (best > bound) {
     result.outcome = SearchOutcome::kScoreTooHigh;
     return result;
   }

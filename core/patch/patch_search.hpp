@@ -43,6 +43,9 @@ struct SearchOptions {
   int max_subpixel_iterations = 10;   // PTAM: 10
   float subpixel_convergence = 0.03f; // step length that counts as converged (PTAM: 0.03)
   float max_subpixel_shift = 2.f;     // farthest the refinement may move from the corner
+  // When no FAST corner within the radius matches, every pixel within this
+  // many search-level pixels of the prediction is scored (0: off, PTAM).
+  int dense_radius = 0;
 };
 
 enum class SearchOutcome : std::uint8_t {

@@ -3,6 +3,7 @@
 // and bundle adjustment of the shared Map, including an aborted one.
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
@@ -71,6 +72,40 @@ TEST_F(PlaneKeyFrames, EpipolarSearchCreatesAccuratePointsAtEveryLevel) {
     EXPECT_FALSE(first_->measurements().at(p->id()).from_source);
   }
   EXPECT_LE(far_off, static_cast<int>(points.size()) / 50) << "of " << points.size();
+}
+
+// Forward motion (a car): the second view is 30 % nearer the plane, so its
+// patches are 1.4x larger than the first view's. PTAM's same-level,
+// unwarped comparison against the first view's FAST corners matches fewer
+// of them and ~10 % wrongly (measured: 525 points, 49 off the plane);
+// warping the template at the mean depth and scoring every pixel on the
+// epipolar segment finds more, and right (711, none off).
+TEST(EpipolarSearch, FindsPointsUnderForwardMotion) {
+  const test::RenderedPlane plane = test::make_plane(3);
+  const Camera camera = test::test_camera();
+  const auto count = [&](bool warp, bool dense, int* far_off) {
+    Map map;
+    auto first = test::add_plane_keyframe(map, plane, camera, SE3d());
+    const double distance = 0.7 * plane.plane_depth;
+    auto second = test::add_plane_keyframe(map, plane, camera, test::view_pose(plane, distance, 0.0, 0.0, 0.1, 0.05));
+    map.update([&](MapEditor& edit) { edit.set_depth_stats(*second, distance, 0.1); });
+    EpipolarSearchOptions options;
+    options.warp_templates = warp;
+    options.dense_line_search = dense;
+    const NewPoints found = epipolar_new_points(map, camera, second, first, options);
+    *far_off = 0;
+    for (const auto& p : found.points)
+      *far_off += std::abs(p->position().z() - plane.plane_depth) > 0.03 * (1 << p->source().level);
+    return static_cast<int>(found.points.size());
+  };
+  int ptam_off = 0, ours_off = 0;
+  const int ptam = count(false, false, &ptam_off);
+  const int ours = count(true, true, &ours_off);
+  std::printf("[  FIGURES ] forward motion x1.43: PTAM's search %d points (%d off the plane), warped + dense %d (%d off)\n",
+              ptam, ptam_off, ours, ours_off);
+  EXPECT_GT(ours, ptam + ptam / 5);
+  EXPECT_LE(ours_off, ours / 50);
+  EXPECT_LT(ours_off, ptam_off);
 }
 
 TEST_F(PlaneKeyFrames, EpipolarSearchKeepsAwayOnlyFromMeasurementsAtTheSameOrNextLevel) {

@@ -20,6 +20,7 @@
 
 #include "core/camera/camera_yaml.hpp"
 #include "core/trajectory/metrics.hpp"
+#include "core/trajectory/trajectory_io.hpp"
 #include "sequences/open_sequence.hpp"
 #include "slam/system.hpp"
 #include "tests/slam/slam_test_run.hpp"
@@ -157,6 +158,32 @@ TEST(RealSequenceRegression, VispCubeTracksNinetyPercentWithMedianErrorBelowOneP
 
   EXPECT_GE(share, 0.90);
   EXPECT_LT(median_rms, 1.5);
+}
+
+// KITTI odometry 06, frames 0-50: a car at ~12 m/s along a straight street
+// (1.2 m between frames at 10 Hz), the camera looking forward. The thresholds
+// are issue 16's. (Measured at this commit: initialised at frame 2, 49 of 49
+// later frames tracked, ATE 0.13 % of the 59 m path; neighbouring settings of
+// the tracker's patch bound or keyframe overlap lose it half way: see
+// docs/benchmarks.md.)
+TEST(RealSequenceRegression, KittiSnippetInitialisesEarlyAndTracksWithinTwoPercent) {
+  FACADESLAM_REQUIRE_SHARED_DATA("kitti06-snippet");
+  const fs::path dir = test::shared_data_dir() / "kitti06-snippet";
+  System system(load_camera(dir / "camera.yaml"), test::synchronous_options());
+  const test::SlamRunLog log = run_folder(system, dir / "rgb.txt");
+  ASSERT_TRUE(system.initialised()) << "KITTI never initialised";
+  EXPECT_LE(log.initialised_at(), 10);
+  const std::size_t after = log.frames.size() - static_cast<std::size_t>(log.initialised_at()) - 1;
+  const std::size_t tracked = log.tracked() - 1;  // the initialisation frame has a pose too
+  const double share = after ? static_cast<double>(tracked) / static_cast<double>(after) : 0.0;
+  ASSERT_GE(log.estimate.size(), 3u);
+  const TrajectoryEvaluation ate = evaluate_trajectory(read_trajectory(dir / "groundtruth.txt"), log.estimate, {});
+  std::printf("[  FIGURES ] kitti06-snippet: %zu frames, initialised at frame %d, %zu of the %zu after it tracked "
+              "(%.1f %%), %zu keyframes, ATE (Sim3) %.4f m = %.3f %% of the %.2f m path\n",
+              log.frames.size(), log.initialised_at(), tracked, after, 100.0 * share, system.map().keyframe_count(),
+              ate.ate_rmse_m, ate.ate_percent_of_path, ate.path_length_m);
+  EXPECT_GE(share, 0.95);
+  EXPECT_LE(ate.ate_percent_of_path, 2.0);
 }
 
 }  // namespace

@@ -107,6 +107,40 @@ TEST_F(PlaneTracking, AsksForAKeyframeOnlyAfterMovingFarEnough) {
   EXPECT_FALSE(candidate->turned_on_the_spot);
 }
 
+// The view sliding off the mapped part of the plane: with PTAM's distance
+// and angle rules out of reach, the overlap rule still asks for a keyframe,
+// once the points found fall below its share of those found at the start.
+TEST_F(PlaneTracking, AsksForAKeyframeWhenTheViewLeavesTheMap) {
+  const auto sliding = [&](int i) { return test::view_pose(plane_, plane_.plane_depth, 0.0, 0.0, 0.03 * i, 0.0); };
+  for (const double min_overlap : {0.85, 0.0}) {
+    TrackerOptions options;
+    options.keyframe_min_frames = 1000;
+    options.keyframe_min_frames_turning = 1000;
+    options.keyframe_min_overlap = min_overlap;
+    Tracker tracker(camera_, map_, queue_, options);
+    tracker.start(SE3d(), 0);
+    int first_request = -1, found_first = 0, found_at_request = 0;
+    for (int i = 1; i <= 25 && first_request < 0; ++i) {
+      const TrackingResult r = tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, sliding(i))));
+      ASSERT_TRUE(r.tracked) << "frame " << i;
+      if (i == 1) found_first = r.fine_found;
+      if (r.keyframe_requested) {
+        first_request = i;
+        found_at_request = r.fine_found;
+      }
+    }
+    if (min_overlap > 0) {
+      ASSERT_GT(first_request, 1) << "no keyframe while the view slid off the map";
+      EXPECT_LT(found_at_request, 0.85 * found_first);
+      EXPECT_GE(found_at_request, 0.6 * found_first) << "asked too late";
+    } else {
+      EXPECT_EQ(first_request, -1) << "the overlap rule is off";
+    }
+    while (queue_.try_pop()) {
+    }
+  }
+}
+
 // Turning on the spot: PTAM's distance rule never fires, the angle rule does
 // once the optical axis has turned past keyframe_min_angle_deg.
 TEST_F(PlaneTracking, AsksForAKeyframeWhenTurningOnTheSpot) {

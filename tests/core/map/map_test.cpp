@@ -89,6 +89,30 @@ TEST(Map, ObservationsArePublishedWithTheirPoints) {
   EXPECT_EQ(kf->measurements().count(point->id()), 0u);
 }
 
+TEST(Map, APointsViewFollowsItsSourceUntilAnotherKeyframeTakesIt) {
+  Map map;
+  test::build_test_map(map, 2);
+  const auto p = map.points().front();
+  EXPECT_EQ(p->view().keyframe_id, p->source().keyframe_id);
+  PointGeometry moved = p->geometry();
+  moved.p_w.x() += 1.0;
+  map.update([&](MapEditor& edit) { edit.set_geometry(*p, moved); });
+  EXPECT_EQ(p->view_geometry().p_w, moved.p_w) << "a view at the source moves with the point";
+
+  const auto other = map.keyframes().back();
+  const PatchSource view{other->id(), other->pyramid(), 1, {30.0, 40.0}};
+  PointGeometry seen = moved;
+  seen.right_w = Eigen::Vector3d(0.02, 0, 0);
+  map.update([&](MapEditor& edit) { edit.set_view(*p, view, seen); });
+  moved.p_w.y() += 1.0;
+  map.update([&](MapEditor& edit) { edit.set_geometry(*p, moved); });
+  EXPECT_EQ(p->view().keyframe_id, other->id());
+  EXPECT_EQ(p->view_geometry().right_w, seen.right_w) << "another keyframe's view is the map maker's to refresh";
+  const auto snapshot = map.snapshot_points();
+  EXPECT_EQ(snapshot.front().view.keyframe_id, other->id());
+  EXPECT_EQ(snapshot.front().view_geometry.right_w, seen.right_w);
+}
+
 TEST(Map, KeyFrameSnapshotsCopyPoseAndDepth) {
   Map map;
   test::build_test_map(map, 2);

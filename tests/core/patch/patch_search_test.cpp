@@ -163,6 +163,27 @@ TEST(RefineSubpixel, FailsWhenItCannotConvergeInTheAllowedIterations) {
   EXPECT_FALSE(refine_subpixel(t, smooth_image({0, 0}), {80, 1e300}, options).converged);
 }
 
+// The smooth image has no FAST corners at all (detection off): PTAM's search
+// finds nothing, the dense fallback finds the shifted patch near the
+// prediction, scoring only pixels within its radius.
+TEST(SearchPatch, DenseFallbackFindsAPatchWithoutACornerNearThePrediction) {
+  const PatchTemplate t = smooth_image_template();
+  ASSERT_TRUE(t.valid());
+  const ImagePyramid shifted(smooth_image({2.0, -1.0}), PyramidOptions{{}, false});
+  const Eigen::Vector2d truth(82.0, 59.0);
+  SearchOptions ptam;
+  EXPECT_EQ(search_patch(t, shifted, {80, 60}, 8.0, ptam).outcome, SearchOutcome::kNoCandidate);
+  SearchOptions dense;
+  dense.dense_radius = 3;
+  const PatchSearchResult r = search_patch(t, shifted, {80, 60}, 8.0, dense);
+  ASSERT_TRUE(r.found()) << to_string(r.outcome);
+  EXPECT_LT((r.pixel_level0 - truth).norm(), 0.05);
+  EXPECT_EQ(r.candidates, 49);  // the 7x7 pixels within 3 of the prediction
+  // The search radius still bounds the dense window.
+  const PatchSearchResult narrow = search_patch(t, shifted, {80, 60}, 1.0, dense);
+  EXPECT_LE(narrow.candidates, 9);
+}
+
 class SquareSearch : public ::testing::Test {
  protected:
   void SetUp() override {
