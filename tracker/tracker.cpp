@@ -231,7 +231,10 @@ TrackingResult Tracker::track(const Frame& frame) {
   T_c_w_ = result.T_c_w;
   lost_frames_ = 0;
   result.tracked = true;
-  if (found_at_keyframe_ == 0) found_at_keyframe_ = result.fine_found;
+  // The overlap rule's reference: the most points found since the last
+  // keyframe (its new points are found only once the map maker has added
+  // them, a frame or more after the request).
+  found_at_keyframe_ = std::max(found_at_keyframe_, result.fine_found);
 
   if (const KeyFrameReason reason = wants_keyframe(result, frame.index); reason != KeyFrameReason::none) {
     request_keyframe(frame, result.T_c_w, std::move(inliers), reason);

@@ -98,7 +98,7 @@ class Tracker {
   int lost_frames_ = 0;
   std::size_t last_keyframe_frame_ = 0;
   bool last_keyframe_turned_ = false;
-  int found_at_keyframe_ = 0;  // points found in the frame that made the last keyframe
+  int found_at_keyframe_ = 0;  // most points found in a frame since the last keyframe request
 };
 
 }  // namespace facadeslam

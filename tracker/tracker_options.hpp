@@ -64,9 +64,9 @@ struct TrackerOptions {
   double keyframe_distance_after_turn = 0.25;  // x keyframe_min_distance for the first keyframe after a turn
   std::size_t keyframe_max_queue = 3;   // map maker busy: wait
   // ... and, whatever the distance, when the points found fall below this
-  // share of those found in the last keyframe's frame (the view leaves the
-  // map: forward motion at 10 Hz), at most every this many frames.
-  double keyframe_min_overlap = 0.85;
+  // share of the most found in a frame since the last keyframe (the view
+  // leaves the map: forward motion at 10 Hz), at most every this many frames.
+  double keyframe_min_overlap = 0.9;
   int keyframe_min_frames_overlap = 2;
 
   std::uint64_t seed = 1;  // point-sampling order; fixed for reproducible runs
