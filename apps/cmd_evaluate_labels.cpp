@@ -60,8 +60,12 @@ void print_summary(const semantics::LabelEvaluation& r) {
                 percent(m.precision).c_str(), percent(m.f1).c_str(),
                 static_cast<unsigned long long>(r.confusion.truth_count(k)));
   }
-  std::printf("  extraction %.1f ms/image, forest %.1f ms/image, training %.1f s, total %.1f s\n",
-              r.extraction_ms_per_image(), r.forest_ms_per_image(), r.training_seconds, r.total_seconds);
+  if (r.model.empty())
+    std::printf("  extraction %.1f ms/image, forest %.1f ms/image, training %.1f s, total %.1f s\n",
+                r.extraction_ms_per_image(), r.forest_ms_per_image(), r.training_seconds, r.total_seconds);
+  else
+    std::printf("  extraction %.1f ms/image, forest %.1f ms/image, total %.1f s\n", r.extraction_ms_per_image(),
+                r.forest_ms_per_image(), r.total_seconds);
   std::fflush(stdout);
 }
 

@@ -131,7 +131,9 @@ LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std:
   const Stopwatch start;
   if (options.step < 1) throw Error(cat("evaluate labels: the grid step must be at least 1, got ", options.step));
   const std::vector<LabelledImage> test = first(read_facade_split(options.dataset, "test.txt"), options.max_test_images);
+  const Stopwatch loading;
   const ForestModel model = load_forest_model(model_file);
+  const double load_ms = 1e3 * loading.elapsed_s();
   std::unique_ptr<PointDescriptor> descriptor;
   try {
     descriptor = make_point_descriptor(model.descriptor, model.genome);
@@ -140,6 +142,8 @@ LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std:
   }
   check_forest_model(model_file, model,
                      {model.descriptor, descriptor->width(), model.genome, labelmefacade_class_table()});
+  spdlog::info("loaded {}: {} trees, {} nodes, in {:.1f} ms", model_file.string(), model.forest.tree_count(),
+               model.forest.nodes().size(), load_ms);
 
   LabelEvaluation result;
   result.descriptor = std::string(descriptor->name());
