@@ -52,15 +52,19 @@ class ByteReader {
     at_ += sizeof(T);
     return value;
   }
-  // A count that sizes what follows; bounded so that a damaged count fails
-  // here rather than as a huge allocation.
-  std::size_t count(const char* what, std::size_t max) {
+  // A count of items that follow, each at least `item_bytes` long. Bounded
+  // by `max` and by the bytes left, so that a damaged count fails here
+  // rather than as a huge allocation.
+  std::size_t count(const char* what, std::size_t max, std::size_t item_bytes) {
     const std::uint32_t n = get<std::uint32_t>(what);
     if (n > max) fail_file(file_, cat("damaged model file: ", what, " is ", n, ", expected at most ", max));
+    if (n * item_bytes > bytes_.size() - at_)
+      fail_file(file_, cat("damaged model file: ", what, " is ", n, " but only ", bytes_.size() - at_,
+                           " bytes follow"));
     return n;
   }
   std::string text(const char* what, std::size_t max) {
-    const std::size_t n = count(what, max);
+    const std::size_t n = count(what, max, 1);
     need(n, what);
     std::string s(reinterpret_cast<const char*>(bytes_.data() + at_), n);
     at_ += n;

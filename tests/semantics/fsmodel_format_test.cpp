@@ -15,6 +15,7 @@
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/forest/fsmodel_format.hpp"
 #include "semantics/forest/random_forest.hpp"
+#include "semantics/forest/zlib_codec.hpp"
 #include "tests/semantics/forest_test_data.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -110,6 +111,35 @@ TEST_F(FsmodelFile, DamagedPayloadIsRejected) {
   damaged[20] = static_cast<char>(damaged[20] ^ 1);
   write_bytes(path, damaged);
   expect_rejected("checksum");
+}
+
+// A payload with a valid checksum whose node count is huge (a writer bug,
+// or a crafted file) fails before allocating for it.
+TEST_F(FsmodelFile, ImplausibleCountsFailBeforeAllocating) {
+  std::uint64_t size = 0, compressed_size = 0;
+  std::memcpy(&size, bytes.data() + 12, 8);
+  const std::vector<unsigned char> compressed(bytes.begin() + 32, bytes.end());
+  std::vector<unsigned char> payload = inflate_bytes(compressed, size);
+  // The node count sits just before the node columns (fsmodel_format.hpp):
+  // 2 bytes per node, 12 per split node.
+  std::size_t splits = 0;
+  for (const RandomForest::Node& n : model.forest.nodes()) splits += n.var >= 0 ? 1 : 0;
+  const std::size_t at = payload.size() - 2 * model.forest.nodes().size() - 12 * splits - 4;
+  std::uint32_t count = 0;
+  std::memcpy(&count, payload.data() + at, 4);
+  ASSERT_EQ(count, model.forest.nodes().size());
+  count = 0x0fffffff;  // 268 million nodes: gigabytes if allocated
+  std::memcpy(payload.data() + at, &count, 4);
+
+  const std::vector<unsigned char> recompressed = deflate_bytes(payload);
+  const std::uint32_t crc = crc32_of(payload);
+  compressed_size = recompressed.size();
+  std::string crafted = bytes.substr(0, 32);
+  std::memcpy(crafted.data() + 20, &crc, 4);
+  std::memcpy(crafted.data() + 24, &compressed_size, 8);
+  crafted.append(recompressed.begin(), recompressed.end());
+  write_bytes(path, crafted);
+  expect_rejected("the node count is 268435455 but only");
 }
 
 TEST_F(FsmodelFile, ForeignFilesAndOtherVersionsAreRejected) {
