@@ -113,6 +113,22 @@ TEST_F(FsmodelFile, DamagedPayloadIsRejected) {
   expect_rejected("checksum");
 }
 
+// Whatever single byte is damaged, header or payload, loading fails with
+// the file named (never a crash, never a silently different forest).
+TEST_F(FsmodelFile, EveryDamagedByteIsDetected) {
+  for (std::size_t at = 0; at < bytes.size(); ++at) {
+    std::string damaged = bytes;
+    damaged[at] = static_cast<char>(damaged[at] ^ 0xff);
+    write_bytes(path, damaged);
+    try {
+      load_forest_model(path);
+      ADD_FAILURE() << "byte " << at << " of " << bytes.size() << " damaged, yet the file loaded";
+    } catch (const Error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(path.string())) << "byte " << at;
+    }
+  }
+}
+
 // A payload with a valid checksum whose node count is huge (a writer bug,
 // or a crafted file) fails before allocating for it.
 TEST_F(FsmodelFile, ImplausibleCountsFailBeforeAllocating) {
