@@ -15,4 +15,9 @@ inline constexpr int kExitNotInitialised = 3;  // replay ran, but the map never 
 // A file that must exist and be a regular file.
 void require_file(const std::filesystem::path& path, const std::string& what);
 
+// An output file that can be written: not a folder, and its folder exists
+// (created if needed) and takes a new file (probed with an empty file that
+// is removed again). For checks before long runs.
+void require_writable_output(const std::filesystem::path& path);
+
 }  // namespace facadeslam::apps

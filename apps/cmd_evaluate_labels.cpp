@@ -9,6 +9,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "apps/cli_support.hpp"
 #include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
 #include "core/util/json.hpp"
@@ -30,6 +31,7 @@ struct Options {
   std::vector<std::string> descriptors{"modular"};  // several: one run each, same keypoints and forest settings
   std::string genome;  // text, file or empty (thesis genome)
   std::filesystem::path json, confusion;
+  std::filesystem::path model;  // test this model file instead of training
 };
 
 std::string percent(double v) {
@@ -40,9 +42,14 @@ std::string percent(double v) {
 }
 
 void print_summary(const semantics::LabelEvaluation& r) {
-  std::printf("label evaluation: %s (%d values), %zu training / %zu test images, %zu training rows, %zu test keypoints\n",
-              r.descriptor.c_str(), r.descriptor_width, r.train_images, r.test_images, r.train_samples,
-              r.test_keypoints);
+  if (r.model.empty())
+    std::printf("label evaluation: %s (%d values), %zu training / %zu test images, %zu training rows, %zu test keypoints\n",
+                r.descriptor.c_str(), r.descriptor_width, r.train_images, r.test_images, r.train_samples,
+                r.test_keypoints);
+  else
+    std::printf("label evaluation of %s: %s (%d values), %d trees of depth <= %d, %zu test images, %zu test keypoints\n",
+                r.model.string().c_str(), r.descriptor.c_str(), r.descriptor_width, r.forest.trees, r.forest.max_depth,
+                r.test_images, r.test_keypoints);
   std::printf("  overall recognition rate  %s %%\n", percent(r.confusion.overall_recognition_rate()).c_str());
   std::printf("  average recognition rate  %s %%\n", percent(r.confusion.average_recognition_rate()).c_str());
   std::printf("  %-12s %8s %9s %8s %10s\n", "class", "recall", "precision", "f1", "keypoints");
@@ -53,8 +60,12 @@ void print_summary(const semantics::LabelEvaluation& r) {
                 percent(m.precision).c_str(), percent(m.f1).c_str(),
                 static_cast<unsigned long long>(r.confusion.truth_count(k)));
   }
-  std::printf("  extraction %.1f ms/image, forest %.1f ms/image, training %.1f s, total %.1f s\n",
-              r.extraction_ms_per_image(), r.forest_ms_per_image(), r.training_seconds, r.total_seconds);
+  if (r.model.empty())
+    std::printf("  extraction %.1f ms/image, forest %.1f ms/image, training %.1f s, total %.1f s\n",
+                r.extraction_ms_per_image(), r.forest_ms_per_image(), r.training_seconds, r.total_seconds);
+  else
+    std::printf("  extraction %.1f ms/image, forest %.1f ms/image, total %.1f s\n", r.extraction_ms_per_image(),
+                r.forest_ms_per_image(), r.total_seconds);
   std::fflush(stdout);
 }
 
@@ -74,13 +85,31 @@ void save_confusion(const std::filesystem::path& path, const semantics::LabelEva
   spdlog::info("wrote {}", path.string());
 }
 
+void write_report(const Options& o, const Json& report) {
+  write_json(o.json, report);
+  spdlog::info("wrote {}", o.json.string());
+}
+
+// --model: the model's own descriptor, genome and forest on test.txt.
+void run_model(const Options& o) {
+  if (!o.json.empty()) require_writable_output(o.json);
+  const semantics::LabelEvaluation result = semantics::evaluate_model(o.evaluation, o.model);
+  print_summary(result);
+  if (!o.confusion.empty()) save_confusion(o.confusion, result);
+  if (!o.json.empty()) write_report(o, semantics::to_json(result, o.evaluation));
+}
+
 void run(Options& o) {
-  o.evaluation.genome = resolve_genome(o.genome);
-  const std::vector<std::string> descriptors = semantics::expand_descriptor_names(o.descriptors);
-  const bool several = descriptors.size() > 1;
   // Output names are checked now, not after an hour of training.
   if (!o.confusion.empty() && o.confusion.extension() != ".png")
     fail_file(o.confusion, "expected a file name ending in .png for the confusion matrix");
+  if (!o.model.empty()) {
+    run_model(o);
+    return;
+  }
+  o.evaluation.genome = resolve_genome(o.genome);
+  const std::vector<std::string> descriptors = semantics::expand_descriptor_names(o.descriptors);
+  const bool several = descriptors.size() > 1;
   if (!o.evaluation.model_out.empty()) {
     semantics::require_model_file_name(o.evaluation.model_out);
     if (several) throw Error("--model-out: a model file holds one descriptor's forest; give one --descriptor");
@@ -101,8 +130,7 @@ void run(Options& o) {
       report["comparison"] = semantics::comparison_json(results);
       report["runs"] = std::move(reports);
     }
-    write_json(o.json, report);
-    spdlog::info("wrote {}", o.json.string());
+    write_report(o, report);
   }
 }
 
@@ -118,30 +146,42 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
   cmd->add_option("--dataset", e.dataset, "Dataset folder: train.txt, test.txt, images/, labels/")->required();
   std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames), std::end(semantics::kPointDescriptorNames));
   names.emplace_back("all");
-  cmd->add_option("--descriptor", options->descriptors,
+  auto* descriptor_option = cmd->add_option("--descriptor", options->descriptors,
                   "Descriptors to evaluate (comma-separated or repeated), or all: one run each on the same keypoints "
                   "and training sample with the same forest settings, then a comparison table; with several, the "
                   "JSON holds {comparison, runs} and --confusion NAME.png becomes NAME_<descriptor>.png")
       ->delimiter(',')
       ->check(CLI::IsMember(names))
       ->capture_default_str();
-  cmd->add_option("--genome", options->genome,
+  auto* genome_option = cmd->add_option("--genome", options->genome,
                   "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the 211-character "
                   "0/1 string (default: the thesis' best genome)");
   cmd->add_option("--step", e.step, "Grid step in pixels")->check(CLI::Range(1, 10000))->capture_default_str();
-  cmd->add_flag("--balance", e.balance,
+  auto* balance_option = cmd->add_flag("--balance", e.balance,
                 "Class-balanced training sample: every class sampled to the median class size (rare classes "
                 "oversampled, common ones subsampled)");
-  cmd->add_option("--max-train", e.max_train_images, "Use only the first N images of train.txt (0 = all)")
+  auto* max_train_option = cmd->add_option("--max-train", e.max_train_images, "Use only the first N images of train.txt (0 = all)")
       ->capture_default_str();
   cmd->add_option("--max-test", e.max_test_images, "Use only the first N images of test.txt (0 = all)")
       ->capture_default_str();
-  cmd->add_option("--max-samples", e.max_samples, "At most N training keypoints, drawn at random (0 = all)")
+  auto* max_samples_option = cmd->add_option("--max-samples", e.max_samples, "At most N training keypoints, drawn at random (0 = all)")
       ->capture_default_str();
-  cmd->add_option("--seed", e.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
+  auto* seed_option = cmd->add_option("--seed", e.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
   cmd->add_option("--json", options->json, "Write the report to this JSON file");
   cmd->add_option("--confusion", options->confusion, "Write the confusion matrix to this PNG");
-  cmd->add_option("--model-out", e.model_out, "Save the trained forest (e.g. model.yml.gz)");
+  auto* model_out_option =
+      cmd->add_option("--model-out", e.model_out, "Save the trained forest (model.fsmodel, or model.yml.gz for OpenCV's own format)");
+  // A model file fixes the descriptor, genome and forest: the training
+  // options would be silently ignored, so they are refused.
+  cmd->add_option("--model", options->model,
+                  "Test this trained model (.fsmodel from `facadeslam train`) on test.txt instead of training one")
+      ->excludes(descriptor_option)
+      ->excludes(genome_option)
+      ->excludes(balance_option)
+      ->excludes(max_train_option)
+      ->excludes(max_samples_option)
+      ->excludes(seed_option)
+      ->excludes(model_out_option);
   cmd->callback([options] { run(*options); });
 }
 

@@ -10,5 +10,6 @@ void add_evaluate_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_replay_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
+void add_train_command(CLI::App& app);
 
 }  // namespace facadeslam::apps

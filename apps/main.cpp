@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   apps::add_evaluate_command(app);
   apps::add_calibrate_command(app);
   apps::add_synth_command(app);
+  apps::add_train_command(app);
 
   try {
     app.parse(argc, argv);

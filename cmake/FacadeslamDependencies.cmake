@@ -9,6 +9,8 @@ find_package(yaml-cpp REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(fmt REQUIRED)
+# The .fsmodel forest files are zlib-compressed (semantics/forest/zlib_codec.hpp).
+find_package(ZLIB REQUIRED)
 if(FACADESLAM_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -8,8 +8,8 @@
 #include "core/util/error.hpp"
 #include "core/util/progress.hpp"
 #include "semantics/evaluation/facade_dataset.hpp"
-#include "semantics/evaluation/label_image.hpp"
-#include "semantics/evaluation/training_sample.hpp"
+#include "semantics/evaluation/labelled_keypoints.hpp"
+#include "semantics/evaluation/model_training.hpp"
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/forest/random_forest.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
@@ -19,109 +19,11 @@
 namespace facadeslam::semantics {
 namespace {
 
-
-
 constexpr int kClasses = static_cast<int>(kSemanticClasses.size());
 
 std::vector<LabelledImage> first(std::vector<LabelledImage> images, std::size_t count) {
   if (count > 0 && images.size() > count) images.resize(count);
   return images;
-}
-
-// The labelled grid keypoints of one image (unknown colours dropped).
-struct LabelledKeypoints {
-  std::vector<cv::Point2f> points;
-  std::vector<std::uint8_t> classes;
-  std::size_t unlabelled = 0;
-};
-
-LabelledKeypoints labelled_keypoints(const cv::Mat& label, int step) {
-  LabelledKeypoints out;
-  const std::vector<cv::Point2f> grid = grid_keypoints(label.size(), step);
-  const std::vector<std::uint8_t> classes = classes_at(label, grid);
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    if (classes[k] == kUnknownClass) {
-      ++out.unlabelled;
-      continue;
-    }
-    out.points.push_back(grid[k]);
-    out.classes.push_back(classes[k]);
-  }
-  return out;
-}
-
-// Pass 1 over the training images: labels only (photos are read for the
-// size check). Pass 2 describes the chosen keypoints.
-struct TrainingSet {
-  cv::Mat samples;
-  std::vector<int> labels;
-};
-
-TrainingSet build_training_set(const std::vector<LabelledImage>& images, const LabelEvaluationOptions& options,
-                               PointDescriptor& descriptor, LabelEvaluation& result) {
-  std::vector<std::vector<cv::Point2f>> points(images.size());
-  std::vector<SampleCandidate> candidates;
-  result.train_keypoints_per_class.assign(kClasses, 0);
-  {
-    Progress progress("reading training labels", images.size());
-    for (std::size_t i = 0; i < images.size(); ++i) {
-      const LoadedLabelledImage loaded = load_labelled_image(images[i]);
-      LabelledKeypoints kps = labelled_keypoints(loaded.label, options.step);
-      result.unlabelled_keypoints += kps.unlabelled;
-      for (std::size_t k = 0; k < kps.points.size(); ++k) {
-        candidates.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k), kps.classes[k]});
-        ++result.train_keypoints_per_class[kps.classes[k]];
-      }
-      points[i] = std::move(kps.points);
-      progress.update(i + 1);
-    }
-  }
-  result.train_keypoints = candidates.size();
-  if (candidates.empty()) throw Error("evaluate labels: the training images have no labelled grid keypoint");
-
-  SampleOptions sample_options;
-  sample_options.balance = options.balance;
-  sample_options.max_samples = options.max_samples;
-  sample_options.seed = options.seed;
-  const std::vector<SampleCandidate> sample = choose_training_sample(candidates, kClasses, sample_options);
-  result.train_samples = sample.size();
-  result.train_samples_per_class.assign(kClasses, 0);
-  for (const SampleCandidate& c : sample) ++result.train_samples_per_class[c.class_id];
-  spdlog::info("training sample: {} of {} labelled keypoints{}", sample.size(), candidates.size(),
-               options.balance ? " (class-balanced)" : "");
-
-  TrainingSet set;
-  set.samples.create(static_cast<int>(sample.size()), descriptor.width(), CV_32F);
-  set.labels.reserve(sample.size());
-  Progress progress("describing training images", images.size());
-  const Stopwatch start;
-  std::size_t row = 0;
-  while (row < sample.size()) {
-    // The chosen keypoints of one image (sorted, possibly repeated).
-    const std::uint32_t image = sample[row].image;
-    std::size_t end = row;
-    std::vector<cv::Point2f> unique;
-    std::vector<int> unique_index;  // per chosen row, its row in `unique`
-    while (end < sample.size() && sample[end].image == image) {
-      if (end == row || sample[end].keypoint != sample[end - 1].keypoint)
-        unique.push_back(points[image][sample[end].keypoint]);
-      unique_index.push_back(static_cast<int>(unique.size()) - 1);
-      ++end;
-    }
-    const cv::Mat bgr = load_labelled_image(images[image]).bgr;
-    const Stopwatch described;
-    const cv::Mat rows = descriptor.compute(bgr, unique);
-    result.train_extraction_seconds += described.elapsed_s();
-    for (std::size_t r = row; r < end; ++r) {
-      rows.row(unique_index[r - row]).copyTo(set.samples.row(static_cast<int>(r)));
-      set.labels.push_back(sample[r].class_id);
-    }
-    row = end;
-    progress.update(image + 1);
-  }
-  progress.finish();
-  spdlog::debug("described the training sample in {:.1f} s", start.elapsed_s());
-  return set;
 }
 
 void test_forest(const std::vector<LabelledImage>& images, const LabelEvaluationOptions& options,
@@ -185,69 +87,106 @@ std::vector<std::string> evaluation_class_names() {
 
 LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
   const Stopwatch start;
-  if (options.step < 1) throw Error(cat("evaluate labels: the grid step must be at least 1, got ", options.step));
-  // Everything that can be checked cheaply is checked before the long work.
-  const std::vector<LabelledImage> train = first(read_facade_split(options.dataset, "train.txt"), options.max_train_images);
+  TrainingOptions training;
+  training.dataset = options.dataset;
+  training.descriptor = options.descriptor;
+  training.genome = options.genome;
+  training.step = options.step;
+  training.balance = options.balance;
+  training.max_train_images = options.max_train_images;
+  training.max_samples = options.max_samples;
+  training.seed = options.seed;
+  // Everything that can be checked cheaply is checked before the long work:
+  // the test list here, the rest by train_model().
   const std::vector<LabelledImage> test = first(read_facade_split(options.dataset, "test.txt"), options.max_test_images);
+  const TrainingRun run = train_model(training);
+
+  if (!options.model_out.empty()) {
+    save_forest_model(options.model_out, run.model);
+    spdlog::info("wrote {}", options.model_out.string());
+  }
+
   const std::unique_ptr<PointDescriptor> descriptor = make_point_descriptor(options.descriptor, options.genome);
+  LabelEvaluation result;
+  result.descriptor = std::string(descriptor->name());
+  result.descriptor_width = descriptor->width();
+  result.genome = options.genome;
+  result.forest = run.model.params;
+  result.train_images = run.train_images;
+  result.test_images = test.size();
+  result.train_keypoints = run.set.keypoints;
+  result.train_samples = run.set.samples;
+  result.train_keypoints_per_class = run.set.keypoints_per_class;
+  result.train_samples_per_class = run.set.samples_per_class;
+  result.unlabelled_keypoints = run.set.unlabelled_keypoints;
+  result.train_extraction_seconds = run.set.extraction_seconds;
+  result.training_seconds = run.training_seconds;
+  result.confusion = ConfusionMatrix(kClasses);
+  test_forest(test, options, *descriptor, run.model.forest, result);
+  result.total_seconds = start.elapsed_s();
+  return result;
+}
+
+LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std::filesystem::path& model_file) {
+  const Stopwatch start;
+  if (options.step < 1) throw Error(cat("evaluate labels: the grid step must be at least 1, got ", options.step));
+  const std::vector<LabelledImage> test = first(read_facade_split(options.dataset, "test.txt"), options.max_test_images);
+  const Stopwatch loading;
+  const ForestModel model = load_forest_model(model_file);
+  const double load_ms = 1e3 * loading.elapsed_s();
+  std::unique_ptr<PointDescriptor> descriptor;
+  try {
+    descriptor = make_point_descriptor(model.descriptor, model.genome);
+  } catch (const Error& e) {
+    fail_file(model_file, cat("the model's descriptor cannot be made: ", e.what()));
+  }
+  check_forest_model(model_file, model,
+                     {model.descriptor, descriptor->width(), model.genome, labelmefacade_class_table()});
+  spdlog::info("loaded {}: {} trees, {} nodes, in {:.1f} ms", model_file.string(), model.forest.tree_count(),
+               model.forest.nodes().size(), load_ms);
 
   LabelEvaluation result;
   result.descriptor = std::string(descriptor->name());
   result.descriptor_width = descriptor->width();
-  result.forest = forest_params(options.genome.decode());
-  result.forest.seed = options.seed;
-  result.train_images = train.size();
+  result.genome = model.genome;
+  result.forest = model.params;
+  result.model = model_file;
   result.test_images = test.size();
   result.confusion = ConfusionMatrix(kClasses);
-
-  const TrainingSet set = build_training_set(train, options, *descriptor, result);
-  spdlog::info("training the forest: {} rows x {} values, {} trees of depth <= {}, {} split variables",
-               set.samples.rows, set.samples.cols, result.forest.trees, result.forest.max_depth,
-               result.forest.split_variables);
-  const Stopwatch training;
-  const RandomForest forest = RandomForest::train(set.samples, set.labels, result.forest);
-  result.training_seconds = training.elapsed_s();
-
-  if (!options.model_out.empty()) {
-    ForestModel model;
-    model.descriptor = result.descriptor;
-    model.genome = options.genome;
-    model.classes = labelmefacade_class_table();
-    model.forest = forest;
-    save_forest_model(options.model_out, model);
-    spdlog::info("wrote {}", options.model_out.string());
-  }
-
-  test_forest(test, options, *descriptor, forest, result);
+  test_forest(test, options, *descriptor, model.forest, result);
   result.total_seconds = start.elapsed_s();
   return result;
 }
 
 Json to_json(const LabelEvaluation& r, const LabelEvaluationOptions& o) {
   Json j = Json::object();
+  // Training facts are unknown (null) for a model read from a file.
+  const bool trained = r.model.empty();
+  const auto if_trained = [trained](Json value) { return trained ? std::move(value) : Json(); };
   j["dataset"] = o.dataset.string();
+  j["model"] = trained ? Json() : Json(r.model.string());
   j["descriptor"] = r.descriptor;
   j["descriptor_width"] = r.descriptor_width;
-  j["genome"] = o.genome.to_string();
+  j["genome"] = r.genome.to_string();
   j["grid_step"] = o.step;
   j["grid_border"] = kDefaultGridBorder;
-  j["balance"] = o.balance;
-  j["max_samples"] = static_cast<unsigned long long>(o.max_samples);
-  j["seed"] = static_cast<unsigned long long>(o.seed);
+  j["balance"] = if_trained(o.balance);
+  j["max_samples"] = if_trained(static_cast<unsigned long long>(o.max_samples));
+  j["seed"] = static_cast<unsigned long long>(r.forest.seed);
   Json forest = Json::object();
   forest["trees"] = r.forest.trees;
   forest["max_depth"] = r.forest.max_depth;
   forest["split_variables"] = r.forest.split_variables;
   forest["min_sample_count"] = r.forest.min_sample_count;
   j["forest"] = std::move(forest);
-  j["train_images"] = static_cast<unsigned long long>(r.train_images);
+  j["train_images"] = if_trained(static_cast<unsigned long long>(r.train_images));
   j["test_images"] = static_cast<unsigned long long>(r.test_images);
-  j["train_keypoints"] = static_cast<unsigned long long>(r.train_keypoints);
-  j["train_samples"] = static_cast<unsigned long long>(r.train_samples);
+  j["train_keypoints"] = if_trained(static_cast<unsigned long long>(r.train_keypoints));
+  j["train_samples"] = if_trained(static_cast<unsigned long long>(r.train_samples));
   j["test_keypoints"] = static_cast<unsigned long long>(r.test_keypoints);
   j["unlabelled_keypoints"] = static_cast<unsigned long long>(r.unlabelled_keypoints);
-  j["train_keypoints_per_class"] = per_class_counts(r.train_keypoints_per_class);
-  j["train_samples_per_class"] = per_class_counts(r.train_samples_per_class);
+  j["train_keypoints_per_class"] = if_trained(per_class_counts(r.train_keypoints_per_class));
+  j["train_samples_per_class"] = if_trained(per_class_counts(r.train_samples_per_class));
 
   j["overall_recognition_rate"] = r.confusion.overall_recognition_rate();
   j["average_recognition_rate"] = r.confusion.average_recognition_rate();
@@ -278,8 +217,8 @@ Json to_json(const LabelEvaluation& r, const LabelEvaluationOptions& o) {
   j["forest_ms_per_image"] = r.forest_ms_per_image();
   j["forest_us_per_keypoint"] =
       r.test_keypoints ? 1e6 * r.forest_seconds / static_cast<double>(r.test_keypoints) : std::nan("");
-  j["train_extraction_seconds"] = r.train_extraction_seconds;
-  j["training_seconds"] = r.training_seconds;
+  j["train_extraction_seconds"] = if_trained(r.train_extraction_seconds);
+  j["training_seconds"] = if_trained(r.training_seconds);
   j["total_seconds"] = r.total_seconds;
   return j;
 }

@@ -2,7 +2,8 @@
 // The labelling evaluation of thesis IV.5 on a LabelMeFacade-layout
 // dataset: grid keypoints on every image, ground truth from the colour
 // labels, a random forest trained on the training images' descriptors and
-// tested on the test images' (`facadeslam evaluate labels`).
+// tested on the test images' (`facadeslam evaluate labels`), or a trained
+// model file tested on the test images alone (`evaluate labels --model`).
 //
 // Keypoints whose label colour is no class colour are skipped and counted
 // (unlabelled_keypoints); every descriptor sees exactly the same keypoints.
@@ -36,7 +37,11 @@ struct LabelEvaluationOptions {
 struct LabelEvaluation {
   std::string descriptor;
   int descriptor_width = 0;
+  Genome genome;
   ForestParams forest;
+  // Empty when the forest was trained in this run; the model file tested
+  // otherwise (then the training counts below are unknown: null in JSON).
+  std::filesystem::path model;
   std::size_t train_images = 0, test_images = 0;
   std::size_t train_keypoints = 0;      // labelled grid keypoints of the training images
   std::size_t train_samples = 0;        // rows the forest was trained on
@@ -57,7 +62,15 @@ struct LabelEvaluation {
 // Shows a progress bar on a terminal (core/util/progress.hpp).
 LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options);
 
+// Tests the model file `model` on test.txt without training: its own
+// descriptor, genome and forest; `options` gives the dataset, the grid
+// step and max_test_images (the training options are not used). A model
+// whose class table is not LabelMeFacade's, or whose descriptor width is
+// not what its descriptor computes today, is an Error naming the file.
+LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std::filesystem::path& model);
+
 // The report: options, counts, overall and average recognition rate,
+// ("model": the model file, or null when trained in the run)
 // per-class tp fp fn tn accuracy precision recall specificity npv f1,
 // the confusion matrix and the timings.
 Json to_json(const LabelEvaluation& result, const LabelEvaluationOptions& options);

@@ -10,6 +10,7 @@
 #include "core/map/semantic_classes.hpp"
 #include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
+#include "semantics/forest/fsmodel_format.hpp"
 #include "semantics/forest/opencv_reason.hpp"
 #include "semantics/text.hpp"
 
@@ -23,17 +24,24 @@ bool ends_with(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+std::string lower_file_name(const std::filesystem::path& path) {
+  std::string name = path.filename().string();
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return name;
+}
+
+bool is_fsmodel(const std::filesystem::path& path) { return ends_with(lower_file_name(path), ".fsmodel"); }
+
 // FileStorage picks the syntax from the name, but the atomic writer's
 // temporary name hides it (".model.yml.tmp12_0.gz"), so it is passed
 // explicitly. Compression still follows the temporary name's ".gz".
 int storage_format(const std::filesystem::path& path) {
-  std::string name = path.filename().string();
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::string name = lower_file_name(path);
   if (ends_with(name, ".gz")) name.resize(name.size() - 3);
   if (ends_with(name, ".yml") || ends_with(name, ".yaml")) return cv::FileStorage::FORMAT_YAML;
   if (ends_with(name, ".xml")) return cv::FileStorage::FORMAT_XML;
   if (ends_with(name, ".json")) return cv::FileStorage::FORMAT_JSON;
-  fail_file(path, "a model file name must end in .yml.gz (recommended), .yml, .yaml, .xml or .json, optionally + .gz");
+  fail_file(path, "a model file name must end in .fsmodel (recommended), or .yml, .yaml, .xml or .json, optionally + .gz");
 }
 
 void check_classes(const std::filesystem::path& path, const std::vector<ClassEntry>& classes,
@@ -115,7 +123,9 @@ std::string class_table_text(const std::vector<ClassEntry>& classes) {
 
 }  // namespace
 
-void require_model_file_name(const std::filesystem::path& path) { storage_format(path); }
+void require_model_file_name(const std::filesystem::path& path) {
+  if (!is_fsmodel(path)) storage_format(path);
+}
 
 std::vector<ClassEntry> labelmefacade_class_table() {
   std::vector<ClassEntry> table;
@@ -127,7 +137,13 @@ void save_forest_model(const std::filesystem::path& path, const ForestModel& mod
   if (!model.forest.trained()) fail_file(path, "cannot save an untrained forest");
   if (model.descriptor.empty()) fail_file(path, "the model needs the descriptor name");
   check_classes(path, model.classes, model.forest);
+  if (is_fsmodel(path)) {
+    write_fsmodel(path, model);
+    return;
+  }
   const int format = storage_format(path);
+  if (model.forest.model().empty())
+    fail_file(path, "this forest was read from a .fsmodel file and can only be saved as .fsmodel");
   write_file_atomically(path, [&](const std::filesystem::path& tmp) {
     try {
       cv::FileStorage out(tmp.string(), cv::FileStorage::WRITE | format);
@@ -151,6 +167,11 @@ void save_forest_model(const std::filesystem::path& path, const ForestModel& mod
 }
 
 ForestModel load_forest_model(const std::filesystem::path& path) {
+  if (is_fsmodel(path)) {
+    ForestModel model = read_fsmodel(path);
+    check_classes(path, model.classes, model.forest);
+    return model;
+  }
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     fail_file(path, "no such model file (expected a forest model written by facadeslam, e.g. model.yml.gz)");
@@ -184,6 +205,11 @@ ForestModel load_forest_model(const std::filesystem::path& path) {
     cv::Ptr<cv::ml::RTrees> trees = cv::ml::RTrees::create();
     trees->read(forest_node);
     model.forest = RandomForest::from_model(trees);
+    model.params.trees = model.forest.tree_count();
+    model.params.max_depth = trees->getMaxDepth();
+    model.params.split_variables = trees->getActiveVarCount();
+    model.params.min_sample_count = trees->getMinSampleCount();
+    model.params.seed = 0;  // not recorded in this format
   } catch (const cv::Exception& e) {
     in.fail(cat("damaged forest in the model file (", opencv_reason(e), ")"));
   } catch (const Error& e) {
@@ -198,6 +224,11 @@ ForestModel load_forest_model(const std::filesystem::path& path) {
 
 ForestModel load_forest_model(const std::filesystem::path& path, const ForestExpectation& expected) {
   ForestModel model = load_forest_model(path);
+  check_forest_model(path, model, expected);
+  return model;
+}
+
+void check_forest_model(const std::filesystem::path& path, const ForestModel& model, const ForestExpectation& expected) {
   if (model.descriptor != expected.descriptor || model.descriptor_width() != expected.descriptor_width)
     fail_file(path, cat("the model was trained on descriptor '", model.descriptor, "' with ",
                         model.descriptor_width(), " values, expected '", expected.descriptor, "' with ",
@@ -211,7 +242,6 @@ ForestModel load_forest_model(const std::filesystem::path& path, const ForestExp
   if (!expected.classes.empty() && model.classes != expected.classes)
     fail_file(path, cat("the model's class table (", class_table_text(model.classes), ") is not the expected one (",
                         class_table_text(expected.classes), ")"));
-  return model;
 }
 
 }  // namespace facadeslam::semantics

@@ -5,8 +5,13 @@
 // forest settings for every descriptor) and the class table (id, name,
 // label colour) its class ids refer to.
 //
-// The file is an OpenCV FileStorage document; a name ending in ".gz"
-// (`model.yml.gz`) is gzip-compressed by OpenCV itself. Layout:
+// Two file formats, chosen by the name:
+// - `.fsmodel` (what `facadeslam train` writes and the replay loads): our
+//   own compact binary form, zlib-compressed and versioned
+//   (fsmodel_format.hpp); under half the size of the other (tested).
+// - an OpenCV FileStorage document (`evaluate labels --model-out`); a name
+//   ending in ".gz" (`model.yml.gz`) is gzip-compressed by OpenCV itself.
+//   It keeps OpenCV's own RTrees for inspection. Layout:
 //   format: facadeslam-forest, version: 1, descriptor: "modular",
 //   descriptor_width: 93, genome: "<211 0/1 characters>",
 //   classes: [{id, name, rgb: [r, g, b]}, ...], forest: {RTrees}
@@ -34,18 +39,23 @@ struct ForestModel {
   std::string descriptor;  // point descriptor name ("modular", "sift", ...)
   Genome genome;
   std::vector<ClassEntry> classes;
+  // The settings the forest was trained with. A FileStorage model does not
+  // record the seed (read back as 0).
+  ForestParams params;
   RandomForest forest;
 
   int descriptor_width() const { return forest.descriptor_width(); }
 };
 
-// Throws Error naming the file unless its name ends in .yml, .yaml, .xml or
-// .json, optionally followed by .gz (checked before long runs that end by
-// saving a model).
+// Throws Error naming the file unless its name ends in .fsmodel, or .yml,
+// .yaml, .xml or .json, optionally followed by .gz (checked before long runs
+// that end by saving a model).
 void require_model_file_name(const std::filesystem::path& path);
 
 // Writes atomically (temp file + rename). The format follows the name:
-// .yml/.yaml/.xml/.json, each optionally followed by .gz. Throws Error
+// .fsmodel, or .yml/.yaml/.xml/.json, each optionally followed by .gz.
+// A .fsmodel model can only be saved as .fsmodel (it has no OpenCV trees
+// behind it). Throws Error
 // naming the file for an untrained forest, a forest class missing from the
 // class table, or a failed write.
 void save_forest_model(const std::filesystem::path& path, const ForestModel& model);
@@ -63,9 +73,12 @@ struct ForestExpectation {
   std::vector<ClassEntry> classes;  // empty: any class table
 };
 
-// load_forest_model() plus: the descriptor name and width, the genome and
-// (when given) the class table must be the expected ones; otherwise an
-// Error names the file, what it holds and what was expected.
+// load_forest_model() plus check_forest_model().
 ForestModel load_forest_model(const std::filesystem::path& path, const ForestExpectation& expected);
+
+// The descriptor name and width, the genome and (when given) the class
+// table of `model` (read from `path`) must be the expected ones; otherwise
+// an Error names the file, what it holds and what was expected.
+void check_forest_model(const std::filesystem::path& path, const ForestModel& model, const ForestExpectation& expected);
 
 }  // namespace facadeslam::semantics

@@ -78,30 +78,37 @@ RandomForest RandomForest::from_model(cv::Ptr<cv::ml::RTrees> model) {
   }
   if (table.type() != CV_32S || table.rows != 2 || table.cols < 1) throw Error("the random forest has no class list");
   for (int c = 0; c < table.cols; ++c) forest.classes_.push_back(table.at<int>(0, c));
-  if (!std::is_sorted(forest.classes_.begin(), forest.classes_.end()) || forest.classes_.front() < 0)
-    throw Error("the random forest's class list is not ascending non-negative ids");
   forest.flatten();
+  return forest;
+}
+
+RandomForest RandomForest::from_nodes(int width, std::vector<int> classes, std::vector<Node> nodes,
+                                      std::vector<int> roots) {
+  RandomForest forest;
+  forest.width_ = width;
+  forest.trees_ = static_cast<int>(roots.size());
+  forest.classes_ = std::move(classes);
+  forest.nodes_ = std::move(nodes);
+  forest.roots_ = std::move(roots);
+  forest.check();
   return forest;
 }
 
 void RandomForest::flatten() {
   const std::vector<cv::ml::DTrees::Node>& nodes = model_->getNodes();
   const std::vector<cv::ml::DTrees::Split>& splits = model_->getSplits();
-  const int node_count = static_cast<int>(nodes.size()), split_count = static_cast<int>(splits.size());
-  const int class_count = static_cast<int>(classes_.size());
+  const int split_count = static_cast<int>(splits.size());
   nodes_.clear();
   nodes_.reserve(nodes.size());
   for (const cv::ml::DTrees::Node& n : nodes) {
-    FlatNode f{-1, 0.0f, -1, -1, -1};
+    Node f;
     if (n.split < 0) {
-      if (n.classIdx < 0 || n.classIdx >= class_count) throw Error("a leaf of the random forest has no valid class");
       f.leaf_class = n.classIdx;
     } else {
-      if (n.split >= split_count || n.left < 0 || n.left >= node_count || n.right < 0 || n.right >= node_count)
-        throw Error("a node of the random forest points outside the tree");
+      if (n.split >= split_count) throw Error("a node of the random forest has no valid split");
       const cv::ml::DTrees::Split& s = splits[static_cast<std::size_t>(n.split)];
-      if (s.varIdx < 0 || s.varIdx >= width_) throw Error("a split of the random forest reads a value outside the descriptor");
-      f.var = s.varIdx;
+      // A negative index would pass for a leaf; width_ makes check() reject it.
+      f.var = s.varIdx >= 0 ? s.varIdx : width_;
       f.threshold = s.c;
       f.low = s.inversed ? n.right : n.left;
       f.high = s.inversed ? n.left : n.right;
@@ -109,6 +116,27 @@ void RandomForest::flatten() {
     nodes_.push_back(f);
   }
   roots_ = model_->getRoots();
+  check();
+}
+
+void RandomForest::check() const {
+  if (width_ <= 0 || trees_ <= 0 || roots_.empty() || nodes_.empty())
+    throw Error("the random forest has no trees or no input values");
+  if (classes_.empty() || !std::is_sorted(classes_.begin(), classes_.end()) ||
+      std::adjacent_find(classes_.begin(), classes_.end()) != classes_.end() || classes_.front() < 0)
+    throw Error("the random forest's class list is not ascending distinct non-negative ids");
+  const int node_count = static_cast<int>(nodes_.size()), class_count = static_cast<int>(classes_.size());
+  for (int i = 0; i < node_count; ++i) {
+    const Node& n = nodes_[static_cast<std::size_t>(i)];
+    if (n.var < 0) {
+      if (n.leaf_class < 0 || n.leaf_class >= class_count) throw Error("a leaf of the random forest has no valid class");
+      continue;
+    }
+    if (n.var >= width_) throw Error("a split of the random forest reads a value outside the descriptor");
+    // Children after their parent: no walk can loop (see Node).
+    if (n.low <= i || n.low >= node_count || n.high <= i || n.high >= node_count)
+      throw Error("a node of the random forest points outside its tree");
+  }
   for (const int r : roots_)
     if (r < 0 || r >= node_count) throw Error("a tree root of the random forest is outside the tree");
 }
@@ -117,27 +145,22 @@ cv::Mat RandomForest::votes(const cv::Mat& samples) const {
   if (!trained()) throw Error("random forest: not trained");
   require_samples(samples, width_, "random forest prediction");
   cv::Mat table = cv::Mat::zeros(samples.rows, static_cast<int>(classes_.size()), CV_32S);
-  const std::size_t max_steps = nodes_.size();
+  const Node* nodes = nodes_.data();
   for (int r = 0; r < samples.rows; ++r) {
     const float* x = samples.ptr<float>(r);
     int* count = table.ptr<int>(r);
     for (const int root : roots_) {
-      int at = root;
-      // A tree is acyclic; the step bound only guards against a damaged file.
-      for (std::size_t step = 0; nodes_[static_cast<std::size_t>(at)].var >= 0 && step < max_steps; ++step) {
-        const FlatNode& n = nodes_[static_cast<std::size_t>(at)];
-        at = x[n.var] <= n.threshold ? n.low : n.high;
-      }
-      const FlatNode& leaf = nodes_[static_cast<std::size_t>(at)];
-      if (leaf.var >= 0) throw Error("random forest prediction: a tree has a cycle (damaged model)");
-      ++count[leaf.leaf_class];
+      const Node* n = nodes + root;
+      // check() guarantees children after parents, so this ends at a leaf.
+      while (n->var >= 0) n = nodes + (x[n->var] <= n->threshold ? n->low : n->high);
+      ++count[n->leaf_class];
     }
   }
   return table;
 }
 
 cv::Mat RandomForest::opencv_votes(const cv::Mat& samples) const {
-  if (!trained()) throw Error("random forest: not trained");
+  if (model_.empty()) throw Error("random forest: no OpenCV model behind this forest");
   require_samples(samples, width_, "random forest prediction");
   if (samples.rows == 0) return cv::Mat(0, static_cast<int>(classes_.size()), CV_32S);
   cv::Mat table;

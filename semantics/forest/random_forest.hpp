@@ -7,7 +7,9 @@
 // Prediction walks a flat copy of the trees rather than calling
 // RTrees::getVotes, which predicts tree by tree through a generic path
 // (~130 us per row for 100 trees; the flat walk is an order of magnitude
-// faster and gives the same votes, checked by a unit test).
+// faster and gives the same votes, checked by a unit test). The flat nodes
+// are also what a .fsmodel file stores (fsmodel_format.hpp): a forest read
+// back from one has no OpenCV model behind it and predicts the same.
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -19,6 +21,19 @@ namespace facadeslam::semantics {
 
 class RandomForest {
  public:
+  // One tree node: a split "value <= threshold goes to `low`, else `high`"
+  // (OpenCV's inverted splits already swapped), or a leaf (var < 0) voting
+  // for column `leaf_class` of classes(). Children always come after their
+  // parent in the node array (OpenCV builds trees depth first), which is
+  // what makes every walk end, even through a damaged file.
+  struct Node {
+    int var = -1;
+    float threshold = 0.0f;
+    int low = -1, high = -1;
+    int leaf_class = -1;
+    friend bool operator==(const Node&, const Node&) = default;
+  };
+
   RandomForest() = default;
 
   // `samples`: CV_32F, one descriptor per row, finite values. `labels`: the
@@ -32,7 +47,14 @@ class RandomForest {
   // classifier.
   static RandomForest from_model(cv::Ptr<cv::ml::RTrees> model);
 
-  bool trained() const { return !model_.empty(); }
+  // A forest from its flat nodes (what a .fsmodel file holds): `classes`
+  // ascending non-negative ids, `roots` one node index per tree. Throws
+  // Error (without a file name) for anything inconsistent: a split reading
+  // outside the width, a child not after its parent or outside the array, a
+  // leaf without a valid class.
+  static RandomForest from_nodes(int width, std::vector<int> classes, std::vector<Node> nodes, std::vector<int> roots);
+
+  bool trained() const { return !nodes_.empty(); }
   // Number of values per descriptor row the forest expects.
   int descriptor_width() const { return width_; }
   int tree_count() const { return trees_; }
@@ -47,27 +69,26 @@ class RandomForest {
   // Both at once (one pass over the trees).
   std::vector<int> predict(const cv::Mat& samples, cv::Mat& probabilities) const;
 
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<int>& roots() const { return roots_; }
+
+  // The OpenCV classifier it was trained as or read from; empty for a
+  // forest made from_nodes().
   const cv::Ptr<cv::ml::RTrees>& model() const { return model_; }
 
   // CV_32S rows x classes().size(): trees voting for each class.
   cv::Mat votes(const cv::Mat& samples) const;
-  // The same through OpenCV's RTrees::getVotes (reference for tests).
+  // The same through OpenCV's RTrees::getVotes (reference for tests; Error
+  // without an OpenCV model).
   cv::Mat opencv_votes(const cv::Mat& samples) const;
 
  private:
-  // One tree node: a split "value <= threshold goes to `low`, else `high`"
-  // (OpenCV's inverted splits already swapped), or a leaf (var < 0).
-  struct FlatNode {
-    int var;
-    float threshold;
-    int low, high;
-    int leaf_class;  // column in classes()
-  };
-  void flatten();  // throws Error on indices out of range (damaged model)
+  void flatten();  // OpenCV's trees as nodes_ and roots_, then check()
+  void check() const;  // throws Error on inconsistent nodes (damaged model)
 
   cv::Ptr<cv::ml::RTrees> model_;
   std::vector<int> classes_;
-  std::vector<FlatNode> nodes_;
+  std::vector<Node> nodes_;
   std::vector<int> roots_;
   int width_ = 0;
   int trees_ = 0;

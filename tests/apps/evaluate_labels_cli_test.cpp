@@ -135,7 +135,7 @@ TEST_F(EvaluateLabelsCli, BadGenomeString) {
 
 TEST_F(EvaluateLabelsCli, BadOutputNamesFailBeforeTheRun) {
   expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --confusion cm.jpg")), ".png");
-  expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --model-out model.bin")), ".yml.gz");
+  expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --model-out model.bin")), ".fsmodel");
 }
 
 }  // namespace

@@ -1,0 +1,86 @@
+// `facadeslam train`: trains the random forest of a genome on a
+// LabelMeFacade-layout dataset's train.txt and writes the model (.fsmodel)
+// with a JSON summary beside it (MODEL.json).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+#include "apps/cli_support.hpp"
+#include "apps/commands.hpp"
+#include "apps/genome_option.hpp"
+#include "core/util/error.hpp"
+#include "core/util/json.hpp"
+#include "semantics/evaluation/model_training.hpp"
+#include "semantics/forest/forest_model.hpp"
+
+namespace facadeslam::apps {
+namespace train_command {
+namespace {
+
+struct Options {
+  semantics::TrainingOptions training;
+  std::string genome;  // text, file or empty (thesis genome)
+  std::filesystem::path out;
+};
+
+std::filesystem::path summary_path(const std::filesystem::path& model) {
+  std::filesystem::path p = model;
+  return p.replace_filename(model.filename().string() + ".json");
+}
+
+void run(Options& o) {
+  // Every input and both outputs are checked before the long work.
+  o.training.genome = resolve_genome(o.genome);
+  std::string name = o.out.filename().string();
+  if (name.size() <= 8 || name.compare(name.size() - 8, 8, ".fsmodel") != 0)
+    fail_file(o.out, "expected a model file name ending in .fsmodel");
+  const std::filesystem::path summary = summary_path(o.out);
+  require_writable_output(o.out);
+  require_writable_output(summary);
+  semantics::training_forest_params(o.training);
+
+  const semantics::TrainingRun run = semantics::train_model(o.training);
+  semantics::save_forest_model(o.out, run.model);
+  const std::uintmax_t bytes = std::filesystem::file_size(o.out);
+  write_json(summary, semantics::training_summary_json(run, o.training, o.out, bytes));
+  std::printf("trained %s: %zu rows from %zu images, %d trees of depth <= %d (%zu nodes) in %.1f s\n",
+              run.model.descriptor.c_str(), run.set.samples, run.train_images, run.model.params.trees,
+              run.model.params.max_depth, run.model.forest.nodes().size(), run.total_seconds);
+  std::printf("wrote %s (%.2f MB) and %s\n", o.out.string().c_str(), static_cast<double>(bytes) / 1e6,
+              summary.string().c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace
+}  // namespace train_command
+
+void add_train_command(CLI::App& app) {
+  using namespace train_command;
+  auto options = std::make_shared<Options>();
+  auto& t = options->training;
+  auto* cmd = app.add_subcommand(
+      "train", "Train the random forest of a genome on a LabelMeFacade-style dataset's train.txt and write the model");
+  cmd->add_option("--dataset", t.dataset, "Dataset folder: train.txt, images/, labels/ (test.txt is never read)")
+      ->required();
+  cmd->add_option("--genome", options->genome,
+                  "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the "
+                  "211-character 0/1 string (default: the thesis' best genome)");
+  cmd->add_flag("--balance", t.balance,
+                "Class-balanced training sample: every class sampled to the median class size");
+  cmd->add_option("--max-samples", t.max_samples, "At most N training keypoints, drawn at random (0 = all)")
+      ->capture_default_str();
+  cmd->add_option("--max-train", t.max_train_images, "Use only the first N images of train.txt (0 = all)")
+      ->capture_default_str();
+  cmd->add_option("--step", t.step, "Grid step in pixels")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_option("--seed", t.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
+  cmd->add_option("--trees", t.trees, "Number of trees (default: the genome's)")->check(CLI::Range(1, 10000));
+  cmd->add_option("--depth", t.max_depth, "Maximum tree depth (default: the genome's)")->check(CLI::Range(1, 1000));
+  cmd->add_option("--out", options->out, "The model file to write (NAME.fsmodel; the summary goes to NAME.fsmodel.json)")
+      ->required();
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace facadeslam::apps
