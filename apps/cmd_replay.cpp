@@ -27,13 +27,31 @@ namespace fs = std::filesystem;
 // The embedded demo, rendered at set-up (scripts/make-demo).
 const fs::path kDemoSequence = "data/demo/sequence";
 const fs::path kDefaultOutput = "facadeslam-out";
+// The shipped forest (models/README.md), relative to the project root.
+const fs::path kDefaultModel = "models/default.fsmodel";
 
 struct ReplayOptions {
   fs::path sequence, camera, config, out, gt, save_map, load_map;
   bool sync = false;
   std::size_t start = 0, stride = 1, limit = 0;
   std::string on_corrupt = "skip";
+  std::string semantics = "on";
+  fs::path model;
 };
+
+// Semantics are on by default with the shipped model; a model the user names
+// must exist (the System loads it before the first frame).
+SemanticsOptions semantics_options(const ReplayOptions& o) {
+  SemanticsOptions semantics;
+  if (o.semantics == "off") return semantics;
+  semantics.model = o.model.empty() ? kDefaultModel : o.model;
+  if (o.model.empty() && !fs::exists(semantics.model)) {
+    spdlog::warn("no model at {} (run from the project folder, or pass --model): semantics off", kDefaultModel.string());
+    return semantics;
+  }
+  semantics.enabled = true;
+  return semantics;
+}
 
 int run_replay(ReplayOptions o) {
   if (o.sequence.empty()) {
@@ -52,6 +70,7 @@ int run_replay(ReplayOptions o) {
   const Camera camera = load_camera(o.camera);
   SlamOptions slam = o.config.empty() ? SlamOptions{} : load_slam_options(o.config);
   slam.synchronous = o.sync;
+  slam.semantics = semantics_options(o);
 
   SequenceOptions seq;
   seq.start = o.start;
@@ -82,7 +101,8 @@ int run_replay(ReplayOptions o) {
 
   const ReplayOutputs outputs =
       write_replay_outputs({o.out, o.save_map.empty() ? o.out / "map.fslmap" : o.save_map, o.gt},
-                           {o.sequence, o.camera, o.sync}, log, system, source->stats());
+                           {o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path()}, log,
+                           system, source->stats());
   std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu keyframes, %zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map().keyframe_count(),
               outputs.cloud_points, o.out.string().c_str());
@@ -117,6 +137,9 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--limit", options->limit, "Stop after this many frames (0 = all)");
   cmd->add_option("--on-corrupt", options->on_corrupt, "Corrupt frame policy: skip or stop")
       ->check(CLI::IsMember({"skip", "stop"}));
+  cmd->add_option("--semantics", options->semantics, "Label the map with the semantic worker: on or off (default on)")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--model", options->model, "Forest model for the semantic worker (default: models/default.fsmodel)");
   cmd->callback([options] {
     const int code = run_replay(*options);
     if (code != kExitOk) throw CLI::RuntimeError(code);

@@ -22,8 +22,22 @@ constexpr KeyFrame::Id kSingleViewGraceKeyframes = 3;
 
 }  // namespace
 
-MapMaker::MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options)
-    : camera_(std::move(camera)), map_(map), queue_(queue), options_(std::move(options)) {}
+MapMaker::MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options,
+                   KeyFramePointsQueue* new_points)
+    : camera_(std::move(camera)), map_(map), queue_(queue), options_(std::move(options)), new_points_(new_points) {}
+
+void MapMaker::hand_off(const std::vector<std::shared_ptr<MapPoint>>& points) {
+  if (!new_points_) return;
+  std::map<KeyFrame::Id, KeyFramePoints> jobs;
+  for (const auto& p : points) {
+    if (p->is_bad() || !map_.point(p->id())) continue;
+    KeyFramePoints& job = jobs[p->source().keyframe_id];
+    if (!job.keyframe) job.keyframe = map_.keyframe(p->source().keyframe_id);
+    if (job.keyframe) job.points.push_back(p);
+  }
+  for (auto& [id, job] : jobs)
+    if (!job.points.empty()) new_points_->push(std::move(job));
+}
 
 MapMaker::~MapMaker() { stop(); }
 
@@ -82,6 +96,7 @@ std::optional<SE3d> MapMaker::initialise(const InitialViews& views) {
     stats_.global_ba_runs += 1;
     stats_.global_ba_ms += ba.ba.time_ms;
   }
+  hand_off(points.points);
   return kf1->T_c_w();
 }
 
@@ -172,6 +187,7 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   }
   map_changed_since_global_ba_ = true;
   ++keyframes_since_global_ba_;
+  hand_off(created.points);
 }
 
 void MapMaker::remove_outlier_points() {

@@ -21,6 +21,7 @@
 #include "core/camera/camera.hpp"
 #include "core/image/frame.hpp"
 #include "core/map/keyframe_candidate.hpp"
+#include "core/map/keyframe_points.hpp"
 #include "core/map/map.hpp"
 #include "mapmaker/map_maker_options.hpp"
 
@@ -48,7 +49,10 @@ struct MapMakerStats {
 
 class MapMaker {
  public:
-  MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options);
+  // `new_points` (optional): where each keyframe's new points go once they
+  // are in the map, for the semantic worker.
+  MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options,
+           KeyFramePointsQueue* new_points = nullptr);
   ~MapMaker();
   MapMaker(const MapMaker&) = delete;
   MapMaker& operator=(const MapMaker&) = delete;
@@ -76,11 +80,15 @@ class MapMaker {
   void update_depth_stats(KeyFrame& keyframe);
   // The keyframe `keyframe` searches for new points against (epipolar_partner.hpp).
   std::shared_ptr<KeyFrame> epipolar_partner(const KeyFrame& keyframe) const;
+  // Hands the points that survived (grouped by source keyframe) to the
+  // semantic worker's queue, if there is one.
+  void hand_off(const std::vector<std::shared_ptr<MapPoint>>& points);
 
   Camera camera_;
   Map& map_;
   KeyFrameQueue& queue_;
   MapMakerOptions options_;
+  KeyFramePointsQueue* new_points_;
 
   std::thread thread_;
   std::atomic<bool> stopping_{false};

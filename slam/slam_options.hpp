@@ -9,12 +9,19 @@
 
 namespace facadeslam {
 
+// The semantic worker (semantics/worker/): off unless a model is given.
+struct SemanticsOptions {
+  bool enabled = false;
+  std::filesystem::path model;  // a .fsmodel (or OpenCV YAML) forest model
+};
+
 struct SlamOptions {
   // Start-up's two-view initialisation; its keys live in the config's
   // `mapmaker:` section (init_*), where PTAM users look for them.
   TwoViewOptions initialisation;
   TrackerOptions tracker;
   MapMakerOptions mapmaker;
+  SemanticsOptions semantics;
   // Synchronous mode: map maker work runs inline at each keyframe, so a run
   // is reproducible bit for bit (set by --sync).
   bool synchronous = false;

@@ -19,19 +19,45 @@ const char* to_string(FrameStatus status) {
   return "?";
 }
 
+namespace {
+
+// The worker for `options`, or none. The model is loaded here, before any
+// frame: a missing or foreign model fails the run before it starts.
+std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& options, KeyFramePointsQueue& queue) {
+  if (!options.enabled) return nullptr;
+  semantics::ForestModel model = semantics::load_forest_model(options.model);
+  if (model.classes != semantics::labelmefacade_class_table())
+    fail_file(options.model, "a model for LabelMeFacade's nine classes (the map's class table)");
+  return std::make_unique<semantics::SemanticWorker>(std::move(model), queue);
+}
+
+}  // namespace
+
 System::System(Camera camera, SlamOptions options)
     : camera_(std::move(camera)),
       options_(std::move(options)),
-      map_maker_(camera_, map_, queue_, options_.mapmaker),
+      worker_(make_worker(options_.semantics, new_points_)),
+      map_maker_(camera_, map_, queue_, options_.mapmaker, worker_ ? &new_points_ : nullptr),
       tracker_(camera_, map_, queue_, options_.tracker),
       initialiser_(camera_, options_.initialisation, map_maker_) {}
 
-System::~System() { map_maker_.stop(); }
+System::~System() {
+  map_maker_.stop();
+  if (worker_) worker_->stop();
+}
+
+std::optional<semantics::SemanticWorkerStats> System::semantic_stats() const {
+  if (!worker_) return std::nullopt;
+  return worker_->stats();
+}
 
 void System::start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity) {
   initialised_ = true;
   tracker_.start(T_c_w, frame_index, velocity);
-  if (!options_.synchronous) map_maker_.start();
+  if (!options_.synchronous) {
+    map_maker_.start();
+    if (worker_) worker_->start();
+  }
 }
 
 void System::load_map(const std::filesystem::path& path) {
@@ -66,7 +92,10 @@ FrameReport System::process(Frame frame) {
     report.status = !report.tracking.tracked     ? FrameStatus::lost
                     : report.tracking.relocalised ? FrameStatus::relocalised
                                                   : FrameStatus::tracking;
-    if (options_.synchronous) map_maker_.process_pending();
+    if (options_.synchronous) {
+      map_maker_.process_pending();
+      if (worker_) worker_->process_pending();
+    }
     log_tracking(report);
   }
   report.total_ms = total.elapsed_ms();
@@ -90,8 +119,10 @@ void System::finish() {
   if (options_.synchronous) {
     map_maker_.process_pending();
     if (initialised_) map_maker_.run_global_ba();
+    if (worker_) worker_->process_pending();
   } else {
     map_maker_.stop();
+    if (worker_) worker_->stop();
   }
 }
 

@@ -6,16 +6,21 @@
 // Before a map exists the system starts up automatically (initialiser.hpp):
 // it tracks the corners of a reference frame until a frame with enough
 // parallax gives a reconstruction, which the map maker turns into the first
-// two keyframes.
+// two keyframes. With semantics on, the semantic worker labels every
+// keyframe's new points (its own thread, or inline after the map maker).
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include "core/camera/camera.hpp"
 #include "core/image/frame.hpp"
 #include "core/map/keyframe_candidate.hpp"
+#include "core/map/keyframe_points.hpp"
 #include "core/map/map.hpp"
 #include "mapmaker/map_maker.hpp"
 #include "slam/initialiser.hpp"
 #include "slam/slam_options.hpp"
+#include "semantics/worker/semantic_worker.hpp"
 #include "tracker/tracker.hpp"
 
 namespace facadeslam {
@@ -53,6 +58,8 @@ class System {
   const Map& map() const { return map_; }
   const Camera& camera() const { return camera_; }
   MapMakerStats map_maker_stats() const { return map_maker_.stats(); }
+  // The semantic worker's figures; nothing when semantics are off.
+  std::optional<semantics::SemanticWorkerStats> semantic_stats() const;
 
  private:
   void start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity);
@@ -63,6 +70,8 @@ class System {
   SlamOptions options_;
   Map map_;
   KeyFrameQueue queue_;
+  KeyFramePointsQueue new_points_;  // map maker -> semantic worker
+  std::unique_ptr<semantics::SemanticWorker> worker_;
   MapMaker map_maker_;
   Tracker tracker_;
   Initialiser initialiser_;

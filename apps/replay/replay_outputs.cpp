@@ -1,9 +1,13 @@
 #include "apps/replay/replay_outputs.hpp"
 
+#include <algorithm>
+#include <map>
+
 #include <spdlog/spdlog.h>
 
 #include "core/map/map_io.hpp"
 #include "core/map/point_cloud_writer.hpp"
+#include "core/map/semantic_classes.hpp"
 #include "core/trajectory/metrics.hpp"
 #include "core/trajectory/top_view.hpp"
 #include "core/trajectory/trajectory_io.hpp"
@@ -17,6 +21,45 @@ Trajectory keyframe_trajectory(const Map& map) {
   for (const KeyFrameSnapshot& kf : map.snapshot_keyframes())
     keyframes.push_back({kf.keyframe->timestamp(), kf.T_c_w.inverse().isometry()});
   return keyframes;
+}
+
+double percentile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5)];
+}
+
+// What the semantic worker did, and the labels the map ended with.
+Json semantics_summary(const ReplayRunInfo& info, const System& system) {
+  Json out = Json::object();
+  const auto stats = system.semantic_stats();
+  out["enabled"] = stats.has_value();
+  if (!stats) return out;
+  out["model"] = info.model.string();
+  std::size_t labelled = 0, unlabelled = 0;
+  std::map<std::uint8_t, std::size_t> counts;
+  for (const PointSnapshot& p : system.map().snapshot_points()) {
+    const SemanticLabel label = p.point->label();
+    if (label.label == kUnlabelled) {
+      ++unlabelled;
+    } else {
+      ++labelled;
+      ++counts[label.label];
+    }
+  }
+  out["points_labelled"] = labelled;
+  out["points_unlabelled"] = unlabelled;
+  Json classes = Json::object();
+  for (const SemanticClass& c : kSemanticClasses) classes[std::string(c.name)] = counts[c.id];
+  out["class_counts"] = classes;
+  Json per_keyframe = Json::object();
+  per_keyframe["median"] = percentile(stats->keyframe_ms, 0.5);
+  per_keyframe["p95"] = percentile(stats->keyframe_ms, 0.95);
+  out["worker_ms_per_keyframe"] = per_keyframe;
+  double total_ms = 0.0;
+  for (const double ms : stats->keyframe_ms) total_ms += ms;
+  out["worker_us_per_point"] = stats->points_labelled ? 1000.0 * total_ms / static_cast<double>(stats->points_labelled) : 0.0;
+  return out;
 }
 
 Json mapping_summary(const MapMakerStats& stats) {
@@ -57,6 +100,7 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   timings["global_ba_total_ms"] = stats.global_ba_ms;
   report["timings"] = timings;
   report["mapping"] = mapping_summary(stats);
+  report["semantics"] = semantics_summary(info, system);
   if (!paths.gt.empty() && log.trajectory.size() >= 3) {
     const Trajectory gt = read_trajectory(paths.gt);
     try {

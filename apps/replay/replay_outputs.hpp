@@ -22,6 +22,7 @@ struct ReplayOutputPaths {
 struct ReplayRunInfo {
   std::filesystem::path sequence, camera_file;
   bool synchronous = false;
+  std::filesystem::path model;  // empty: semantics off
 };
 
 struct ReplayOutputs {

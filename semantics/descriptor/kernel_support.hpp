@@ -87,7 +87,12 @@ static_assert(kLanes == 8, "transpose_lanes is an 8 x 8 transpose");
 
 }  // namespace facadeslam::semantics
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(FACADESLAM_NO_KERNEL_CLONES)
+// No clones under ThreadSanitizer: the clones' ifunc resolvers run while the
+// dynamic loader relocates the program, before the TSan runtime is set up,
+// and the instrumented resolver crashes there (seen in test_slam once the
+// semantic worker linked the descriptor in).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(FACADESLAM_NO_KERNEL_CLONES) && \
+    !defined(__SANITIZE_THREAD__)
 #define FACADESLAM_KERNEL __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define FACADESLAM_KERNEL

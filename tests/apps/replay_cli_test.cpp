@@ -176,5 +176,31 @@ TEST_F(ReplayCli, MapFromAnotherCameraIsRejected) {
   expect_one_line_error(run(load), 1, "map was made with camera");
 }
 
+// The semantic worker with the shipped model labels the map; `--semantics
+// off` leaves it unlabelled; a model that is not there fails before any
+// frame, naming it, with nothing written.
+TEST_F(ReplayCli, SemanticsLabelTheMapAndAMissingModelFailsFirst) {
+  const fs::path sequence = render_demo("demo", 40);
+  const fs::path model = test::source_dir() / "models" / "default.fsmodel";
+  std::string on = "-q replay ";
+  on.append(quoted(sequence)).append(" --sync --model ").append(quoted(model)).append(" --out ").append(quoted(dir_ / "on"));
+  const test::CliResult r = run(on);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string report = test::read_file_text(dir_ / "on" / "report.json");
+  EXPECT_GT(test::json_number(report, "points_labelled"), 50.0) << report;
+  EXPECT_EQ(test::json_number(report, "points_unlabelled"), 0.0) << report;
+
+  std::string off = "-q replay ";
+  off.append(quoted(sequence)).append(" --sync --semantics off --out ").append(quoted(dir_ / "off"));
+  ASSERT_EQ(run(off).exit_code, 0);
+  EXPECT_THAT(test::read_file_text(dir_ / "off" / "report.json"), HasSubstr("\"enabled\": false"));
+
+  std::string missing = "-q replay ";
+  missing.append(quoted(sequence)).append(" --sync --model ").append(quoted(dir_ / "absent.fsmodel"));
+  missing.append(" --out ").append(quoted(dir_ / "missing"));
+  expect_one_line_error(run(missing), 1, "absent.fsmodel");
+  EXPECT_FALSE(fs::exists(dir_ / "missing"));
+}
+
 }  // namespace
 }  // namespace facadeslam

@@ -84,5 +84,38 @@ TEST(System, ThreadedMapMakerKeepsUpWithTheTracker) {
   EXPECT_LT(ate.ate_percent_of_path, 10.0) << "ATE " << ate.ate_rmse_m << " m";
 }
 
+// With the shipped model the semantic worker labels the map's points:
+// inline after the map maker (--sync) and on its own thread (the three-thread
+// case the ThreadSanitizer build runs). Labels never change tracking.
+TEST(System, SemanticWorkerLabelsTheNewPoints) {
+  // Rendered once for both runs (OSMesa's JIT is heavy under the sanitizers).
+  test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 45);
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < scene.size(); ++i) frames.push_back(scene.render(i));
+  for (const bool synchronous : {true, false}) {
+    SlamOptions options = test::synchronous_options();
+    options.synchronous = synchronous;
+    options.semantics = {true, test::source_dir() / "models" / "default.fsmodel"};
+    System system(scene.camera(), options);
+    for (int i = 0; i < scene.size(); ++i)
+      system.process({static_cast<std::size_t>(i), scene.timestamp(i), frames[static_cast<std::size_t>(i)]});
+    system.finish();
+    ASSERT_TRUE(system.initialised());
+    std::size_t labelled = 0, total = 0;
+    for (const PointSnapshot& p : system.map().snapshot_points()) {
+      ++total;
+      const SemanticLabel label = p.point->label();
+      if (label.label == kUnlabelled) continue;
+      ++labelled;
+      EXPECT_GT(label.confidence, 0.f);
+      EXPECT_LE(label.confidence, 1.f);
+    }
+    ASSERT_GT(total, 50u);
+    EXPECT_GE(static_cast<double>(labelled), 0.9 * static_cast<double>(total)) << (synchronous ? "sync" : "threaded");
+    ASSERT_TRUE(system.semantic_stats().has_value());
+    EXPECT_GE(system.semantic_stats()->keyframes, 1u);
+  }
+}
+
 }  // namespace
 }  // namespace facadeslam

@@ -1,0 +1,119 @@
+// The semantic worker with the shipped model on a committed facade photo:
+// every good point gets the forest's label and vote share at its patch
+// centre; bad points and keyframes without a colour image are skipped; the
+// threaded worker labels what is queued.
+#include "semantics/worker/semantic_worker.hpp"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/map/map.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace facadeslam::semantics {
+namespace {
+
+class SemanticWorkerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto photo = test::source_dir() / "data/demo/photos/images" /
+                       "spatial_envelope_256x256_static_8outdoorcategories__insidecity_a140032.jpg";
+    colour_ = cv::imread(photo.string(), cv::IMREAD_COLOR);
+    ASSERT_FALSE(colour_.empty()) << photo;
+    model_ = load_forest_model(test::source_dir() / "models/default.fsmodel");
+  }
+
+  // A keyframe of the photo (or of its grey pyramid only) with points at its
+  // strongest level-0 corners.
+  KeyFramePoints job(bool with_colour, std::size_t count = 40) const {
+    auto pyramid = std::make_shared<const ImagePyramid>(colour_);
+    auto keyframe = std::make_shared<const KeyFrame>(0, Frame{0, 0.0, with_colour ? colour_ : cv::Mat(), {}, pyramid},
+                                                     SE3d());
+    KeyFramePoints out{keyframe, {}};
+    for (const Corner& c : pyramid->level(0).corners) {
+      if (out.points.size() == count) break;
+      out.points.push_back(std::make_shared<MapPoint>(out.points.size(), PatchSource{0, pyramid, 0, {c.x, c.y}},
+                                                      PointGeometry{}));
+    }
+    return out;
+  }
+
+  cv::Mat colour_;
+  ForestModel model_;
+};
+
+TEST_F(SemanticWorkerTest, LabelsEveryPointWithTheForestsVoteAtItsPatch) {
+  KeyFramePointsQueue queue;
+  SemanticWorker worker(model_, queue);
+  const KeyFramePoints points = job(true);
+  ASSERT_EQ(points.points.size(), 40u);
+  worker.label(points);
+
+  // The same descriptor and forest, by hand.
+  auto descriptor = make_point_descriptor(model_.descriptor, model_.genome);
+  std::vector<cv::Point2f> keypoints;
+  for (const auto& p : points.points)
+    keypoints.emplace_back(static_cast<float>(p->source().pixel_level0.x()), static_cast<float>(p->source().pixel_level0.y()));
+  cv::Mat shares;
+  const std::vector<int> expected = model_.forest.predict(descriptor->compute(colour_, keypoints), shares);
+  for (std::size_t i = 0; i < points.points.size(); ++i) {
+    const SemanticLabel label = points.points[i]->label();
+    EXPECT_EQ(label.label, expected[i]) << "point " << i;
+    EXPECT_GT(label.confidence, 0.f);
+    EXPECT_LE(label.confidence, 1.f);
+  }
+  const SemanticWorkerStats stats = worker.stats();
+  EXPECT_EQ(stats.keyframes, 1u);
+  EXPECT_EQ(stats.points_labelled, 40u);
+  EXPECT_EQ(stats.points_skipped, 0u);
+}
+
+TEST_F(SemanticWorkerTest, SkipsBadPointsAndKeyframesWithoutColour) {
+  KeyFramePointsQueue queue;
+  SemanticWorker worker(model_, queue);
+  const KeyFramePoints grey = job(false, 10);
+  worker.label(grey);
+  for (const auto& p : grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
+
+  Map map;
+  const KeyFramePoints coloured = job(true, 10);
+  map.add({}, coloured.points);
+  map.update([&](MapEditor& edit) { edit.mark_bad(*coloured.points[3]); });
+  worker.label(coloured);
+  EXPECT_EQ(coloured.points[3]->label().label, kUnlabelled);
+  EXPECT_NE(coloured.points[4]->label().label, kUnlabelled);
+  EXPECT_EQ(worker.stats().points_skipped, 11u);
+  EXPECT_EQ(worker.stats().points_labelled, 9u);
+}
+
+TEST_F(SemanticWorkerTest, TheThreadLabelsWhatIsQueuedBeforeItStops) {
+  KeyFramePointsQueue queue;
+  SemanticWorker worker(model_, queue);
+  worker.start();
+  std::vector<KeyFramePoints> jobs;
+  for (int k = 0; k < 3; ++k) {
+    jobs.push_back(job(true, 15));
+    queue.push(jobs.back());
+  }
+  worker.stop();
+  for (const auto& j : jobs)
+    for (const auto& p : j.points) EXPECT_NE(p->label().label, kUnlabelled);
+  EXPECT_EQ(worker.stats().keyframes, 3u);
+}
+
+TEST(SemanticWorker, RejectsAModelWhoseForestDoesNotFitItsDescriptor) {
+  ForestModel model = load_forest_model(test::source_dir() / "models/default.fsmodel");
+  // One value fewer than the forest was trained on.
+  DescriptorParams params = model.genome.decode();
+  for (std::size_t i = 0; i < params.activation.size(); ++i)
+    if (params.activation[i]) {
+      params.activation.reset(i);
+      break;
+    }
+  model.genome = Genome::encode(params);
+  KeyFramePointsQueue queue;
+  EXPECT_THROW(SemanticWorker(model, queue), Error);
+}
+
+}  // namespace
+}  // namespace facadeslam::semantics
