@@ -1,6 +1,5 @@
 #include "apps/replay/replay_outputs.hpp"
 
-#include <algorithm>
 #include <map>
 
 #include <spdlog/spdlog.h>
@@ -21,12 +20,6 @@ Trajectory keyframe_trajectory(const Map& map) {
   for (const KeyFrameSnapshot& kf : map.snapshot_keyframes())
     keyframes.push_back({kf.keyframe->timestamp(), kf.T_c_w.inverse().isometry()});
   return keyframes;
-}
-
-double percentile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5)];
 }
 
 // What the semantic worker did, and the labels the map ended with.
@@ -52,10 +45,7 @@ Json semantics_summary(const ReplayRunInfo& info, const System& system) {
   Json classes = Json::object();
   for (const SemanticClass& c : kSemanticClasses) classes[std::string(c.name)] = counts[c.id];
   out["class_counts"] = classes;
-  Json per_keyframe = Json::object();
-  per_keyframe["median"] = percentile(stats->keyframe_ms, 0.5);
-  per_keyframe["p95"] = percentile(stats->keyframe_ms, 0.95);
-  out["worker_ms_per_keyframe"] = per_keyframe;
+  out["worker_ms_per_keyframe"] = timing_summary(stats->keyframe_ms);
   double total_ms = 0.0;
   for (const double ms : stats->keyframe_ms) total_ms += ms;
   out["worker_us_per_point"] = stats->points_labelled ? 1000.0 * total_ms / static_cast<double>(stats->points_labelled) : 0.0;

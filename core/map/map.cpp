@@ -26,10 +26,6 @@ void MapEditor::set_depth_stats(KeyFrame& keyframe, double mean, double sigma) {
   keyframe.depth_sigma_ = sigma;
 }
 
-void MapEditor::set_measurement(KeyFrame& keyframe, MapPoint::Id point, const Measurement& measurement) {
-  keyframe.measurements_[point] = measurement;
-}
-
 void MapEditor::set_geometry(MapPoint& point, const PointGeometry& geometry) {
   point.geometry_ = geometry;
   if (point.view_.keyframe_id == point.source_.keyframe_id) point.view_geometry_ = geometry;

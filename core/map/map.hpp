@@ -84,7 +84,6 @@ class MapEditor : public MapView {
  public:
   void set_pose(KeyFrame& keyframe, const SE3d& T_c_w) { keyframe.T_c_w_ = T_c_w; }
   void set_depth_stats(KeyFrame& keyframe, double mean, double sigma);
-  void set_measurement(KeyFrame& keyframe, MapPoint::Id point, const Measurement& measurement);
   // Returns whether there was one.
   bool erase_measurement(KeyFrame& keyframe, MapPoint::Id point);
   // Moves the point; a view still at its source keyframe moves with it.

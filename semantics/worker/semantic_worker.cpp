@@ -21,10 +21,11 @@ void SemanticWorker::label(const KeyFramePoints& job) {
   std::vector<std::shared_ptr<MapPoint>> points;
   std::vector<cv::Point2f> keypoints;
   const cv::Mat& colour = job.keyframe->colour();
+  // The colour image may be missing (a grey sequence): nothing to describe.
+  const bool describable = !colour.empty() && colour.type() == CV_8UC3;
   std::size_t skipped = 0;
   for (const auto& p : job.points) {
-    // The colour image may be missing (a grey sequence): nothing to describe.
-    if (p->is_bad() || colour.empty() || colour.type() != CV_8UC3) {
+    if (!describable || p->is_bad()) {
       ++skipped;
       continue;
     }

@@ -12,6 +12,7 @@
 #include "semantics/descriptor/genome.hpp"
 #include "semantics/text.hpp"
 #include "tests/apps/cli_run.hpp"
+#include "tests/apps/dataset_cli_test_fixture.hpp"
 #include "tests/semantics/synthetic_facades.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -21,15 +22,8 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-class EvaluateLabelsCli : public ::testing::Test {
+class EvaluateLabelsCli : public test::DatasetCliTest {
  protected:
-  void SetUp() override {
-    std::filesystem::create_directories(scratch());
-    semantics::test_util::write_synthetic_dataset(data(), 3, 2);
-  }
-  std::filesystem::path data() const { return dir_ / "data"; }
-  std::filesystem::path scratch() const { return dir_ / "scratch"; }
-  test::CliResult run(const std::string& arguments) { return test::run_cli(FACADESLAM_BINARY, arguments, scratch()); }
   std::string dataset_option() const {
     std::string s = "--dataset ";
     return s.append(test::shell_quoted(data().string()));
@@ -45,7 +39,6 @@ class EvaluateLabelsCli : public ::testing::Test {
     const auto lines = std::count(r.err.begin(), r.err.end(), '\n');
     EXPECT_EQ(lines, 1) << r.err;
   }
-  test::TempDir dir_;
 };
 
 TEST_F(EvaluateLabelsCli, WritesReportPlotAndModel) {

@@ -13,6 +13,7 @@
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/text.hpp"
 #include "tests/apps/cli_run.hpp"
+#include "tests/apps/dataset_cli_test_fixture.hpp"
 #include "tests/semantics/forest_test_data.hpp"
 #include "tests/semantics/synthetic_facades.hpp"
 #include "tests/support/test_support.hpp"
@@ -23,16 +24,9 @@ namespace {
 using ::testing::HasSubstr;
 using semantics::cat;
 
-class TrainCli : public ::testing::Test {
+class TrainCli : public test::DatasetCliTest {
  protected:
-  void SetUp() override {
-    std::filesystem::create_directories(scratch());
-    semantics::test_util::write_synthetic_dataset(data(), 3, 2);
-  }
-  std::filesystem::path data() const { return dir_ / "data"; }
-  std::filesystem::path scratch() const { return dir_ / "scratch"; }
   std::filesystem::path model() const { return dir_ / "out/small.fsmodel"; }
-  test::CliResult run(const std::string& arguments) { return test::run_cli(FACADESLAM_BINARY, arguments, scratch()); }
   static std::string q(const std::filesystem::path& p) { return test::shell_quoted(p.string()); }
   std::string train_args(const std::filesystem::path& out) const {
     return cat("-q train --dataset ", q(data()), " --step 7 --seed 3 --trees 20 --depth 10 --out ", q(out));
@@ -42,7 +36,6 @@ class TrainCli : public ::testing::Test {
     EXPECT_THAT(r.err, HasSubstr(mention));
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
-  test::TempDir dir_;
 };
 
 TEST_F(TrainCli, TrainsAModelThatEvaluateLabelsTestsWithoutRetraining) {
