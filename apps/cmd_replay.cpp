@@ -4,16 +4,19 @@
 // (replay/replay_outputs.hpp).
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <spdlog/spdlog.h>
 
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
+#include "apps/replay/ground_truth_labels.hpp"
 #include "apps/replay/replay_log.hpp"
 #include "apps/replay/replay_outputs.hpp"
 #include "core/camera/camera_yaml.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress.hpp"
+#include "semantics/evaluation/map_label_accuracy.hpp"
 #include "sequences/open_sequence.hpp"
 #include "slam/system.hpp"
 
@@ -27,29 +30,38 @@ namespace fs = std::filesystem;
 // The embedded demo, rendered at set-up (scripts/make-demo).
 const fs::path kDemoSequence = "data/demo/sequence";
 const fs::path kDefaultOutput = "facadeslam-out";
-// The shipped forest (models/README.md), relative to the project root.
+// The shipped forest (models/README.md) and the semantic settings, relative
+// to the project root.
 const fs::path kDefaultModel = "models/default.fsmodel";
+const fs::path kDefaultSemanticsConfig = "configs/semantics.yaml";
 
 struct ReplayOptions {
-  fs::path sequence, camera, config, out, gt, save_map, load_map;
+  fs::path sequence, camera, config, out, gt, gt_labels, save_map, load_map;
   bool sync = false;
   std::size_t start = 0, stride = 1, limit = 0;
   std::string on_corrupt = "skip";
-  std::string semantics = "on";
-  fs::path model;
+  std::string semantics;  // on, off, or empty: as the semantics config says
+  fs::path model, semantics_config;
 };
 
-// Semantics are on by default with the shipped model; a model the user names
-// must exist (the System loads it before the first frame).
+// Semantics are on by default with the shipped model and settings; a config
+// or model the user names must exist (the System loads the model before the
+// first frame), the defaults may be missing (run from elsewhere: a warning).
 SemanticsOptions semantics_options(const ReplayOptions& o) {
   SemanticsOptions semantics;
-  if (o.semantics == "off") return semantics;
-  semantics.model = o.model.empty() ? kDefaultModel : o.model;
-  if (o.model.empty() && !fs::exists(semantics.model)) {
-    spdlog::warn("no model at {} (run from the project folder, or pass --model): semantics off", kDefaultModel.string());
-    return semantics;
-  }
   semantics.enabled = true;
+  semantics.model = kDefaultModel;
+  if (!o.semantics_config.empty())
+    semantics = load_semantics_options(o.semantics_config, semantics);
+  else if (fs::exists(kDefaultSemanticsConfig))
+    semantics = load_semantics_options(kDefaultSemanticsConfig, semantics);
+  if (!o.semantics.empty()) semantics.enabled = o.semantics == "on";
+  if (!o.model.empty()) semantics.model = o.model;
+  if (!semantics.enabled) return semantics;
+  if (o.model.empty() && semantics.model == kDefaultModel && !fs::exists(semantics.model)) {
+    spdlog::warn("no model at {} (run from the project folder, or pass --model): semantics off", kDefaultModel.string());
+    semantics.enabled = false;
+  }
   return semantics;
 }
 
@@ -84,6 +96,12 @@ int run_replay(ReplayOptions o) {
   System system(camera, slam);
   if (!o.load_map.empty()) system.load_map(o.load_map);
 
+  std::optional<GroundTruthLabelFiles> gt_labels;
+  if (const fs::path folder = find_ground_truth_labels(o.sequence, o.gt_labels); !folder.empty()) {
+    if (slam.semantics.enabled) spdlog::info("ground-truth labels from {}", folder.string());
+    gt_labels.emplace(folder);
+  }
+
   ReplayLog log;
   Progress progress("replay", source->size_hint());
   while (auto frame = source->next()) {
@@ -91,6 +109,7 @@ int run_replay(ReplayOptions o) {
       fail_file(frame->source, "image is " + std::to_string(frame->colour.cols) + "x" + std::to_string(frame->colour.rows) +
                                    " but the camera (" + o.camera.string() + ") is " + std::to_string(camera.width()) +
                                    "x" + std::to_string(camera.height()));
+    if (gt_labels) gt_labels->add(*frame);
     const FrameReport r = system.process(std::move(*frame));
     log.add(r, system.initialised());
     progress.update(log.frames, to_string(r.status));
@@ -99,16 +118,21 @@ int run_replay(ReplayOptions o) {
   if (log.frames == 0) throw Error(o.sequence.string() + ": the sequence has no frames");
   system.finish();
 
-  const ReplayOutputs outputs =
-      write_replay_outputs({o.out, o.save_map.empty() ? o.out / "map.fslmap" : o.save_map, o.gt},
-                           {o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path()}, log,
-                           system, source->stats());
+  ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(), {}};
+  if (gt_labels && slam.semantics.enabled)
+    info.label_accuracy =
+        semantics::map_label_accuracy(system.map(), [&](std::size_t index) { return gt_labels->class_ids(index); });
+  const ReplayOutputs outputs = write_replay_outputs(
+      {o.out, o.save_map.empty() ? o.out / "map.fslmap" : o.save_map, o.gt}, info, log, system, source->stats());
   std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu keyframes, %zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map().keyframe_count(),
               outputs.cloud_points, o.out.string().c_str());
   if (const Json* ate = outputs.report.find("ate_rmse_m"))
     std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path\n", ate->as_double(),
                 outputs.report.find("ate_percent_of_path")->as_double());
+  if (info.label_accuracy && info.label_accuracy->accuracy())
+    std::printf("replay: label accuracy %.3f over %zu labelled points\n", *info.label_accuracy->accuracy(),
+                info.label_accuracy->evaluated);
   if (!system.initialised()) {
     std::fprintf(stderr, "facadeslam: the map was never initialised (not enough parallax?); see %s\n",
                  (o.out / "report.json").string().c_str());
@@ -129,6 +153,9 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--config", options->config, "SLAM settings YAML (see configs/slam.yaml)");
   cmd->add_option("--out", options->out, "Output folder (default: ./facadeslam-out)");
   cmd->add_option("--gt", options->gt, "Ground-truth TUM trajectory: adds ATE to the report");
+  cmd->add_option("--gt-labels", options->gt_labels,
+                  "Folder of ground-truth label PNGs named like the frames: adds label accuracy to the report "
+                  "(default: label/ beside a synthetic sequence)");
   cmd->add_flag("--sync", options->sync, "Run the map maker inline: reproducible results");
   cmd->add_option("--save-map", options->save_map, "Where to write the map (default: OUT/map.fslmap)");
   cmd->add_option("--load-map", options->load_map, "Start from a saved map instead of initialising");
@@ -137,8 +164,12 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--limit", options->limit, "Stop after this many frames (0 = all)");
   cmd->add_option("--on-corrupt", options->on_corrupt, "Corrupt frame policy: skip or stop")
       ->check(CLI::IsMember({"skip", "stop"}));
-  cmd->add_option("--semantics", options->semantics, "Label the map with the semantic worker: on or off (default on)")
+  cmd->add_option("--semantics", options->semantics,
+                  "Label the map with the semantic worker and track label-aware: on or off (default: on, or as "
+                  "--semantics-config says)")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--semantics-config", options->semantics_config,
+                  "Semantic settings YAML: model, class prior, unreliable classes (default: configs/semantics.yaml)");
   cmd->add_option("--model", options->model, "Forest model for the semantic worker (default: models/default.fsmodel)");
   cmd->callback([options] {
     const int code = run_replay(*options);

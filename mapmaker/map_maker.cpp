@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 #include <spdlog/spdlog.h>
 
@@ -26,17 +27,19 @@ MapMaker::MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOption
                    KeyFramePointsQueue* new_points)
     : camera_(std::move(camera)), map_(map), queue_(queue), options_(std::move(options)), new_points_(new_points) {}
 
-void MapMaker::hand_off(const std::vector<std::shared_ptr<MapPoint>>& points) {
-  if (!new_points_) return;
-  std::map<KeyFrame::Id, KeyFramePoints> jobs;
-  for (const auto& p : points) {
-    if (p->is_bad() || !map_.point(p->id())) continue;
-    KeyFramePoints& job = jobs[p->source().keyframe_id];
-    if (!job.keyframe) job.keyframe = map_.keyframe(p->source().keyframe_id);
-    if (job.keyframe) job.points.push_back(p);
+void MapMaker::hand_off(const std::shared_ptr<KeyFrame>& keyframe, const NewPoints* only) {
+  if (!new_points_ || !keyframe) return;
+  std::set<MapPoint::Id> wanted;
+  if (only)
+    for (const auto& p : only->points) wanted.insert(p->id());
+  KeyFramePoints job{keyframe, {}};
+  // Measurements: the map maker, their only writer, reads them without a lock.
+  for (const auto& [id, m] : keyframe->measurements()) {
+    if (only && !wanted.contains(id)) continue;
+    auto p = map_.point(id);
+    if (p && !p->is_bad()) job.points.push_back({std::move(p), m.pixel});
   }
-  for (auto& [id, job] : jobs)
-    if (!job.points.empty()) new_points_->push(std::move(job));
+  if (!job.points.empty()) new_points_->push(std::move(job));
 }
 
 MapMaker::~MapMaker() { stop(); }
@@ -96,7 +99,8 @@ std::optional<SE3d> MapMaker::initialise(const InitialViews& views) {
     stats_.global_ba_runs += 1;
     stats_.global_ba_ms += ba.ba.time_ms;
   }
-  hand_off(points.points);
+  hand_off(kf0);
+  hand_off(kf1);
   return kf1->T_c_w();
 }
 
@@ -154,7 +158,8 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
     });
 
   NewPoints created;
-  if (const auto other = epipolar_partner(*kf)) {
+  const auto other = epipolar_partner(*kf);
+  if (other) {
     EpipolarSearchStats es;
     created = epipolar_new_points(map_, camera_, kf, other, options_.epipolar, &es);
     map_.add(created);
@@ -187,7 +192,10 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   }
   map_changed_since_global_ba_ = true;
   ++keyframes_since_global_ba_;
-  hand_off(created.points);
+  // The semantic worker gets every point the new keyframe measures, and the
+  // partner keyframe's measurements of the points it helped create.
+  hand_off(kf);
+  hand_off(other, &created);
 }
 
 void MapMaker::remove_outlier_points() {

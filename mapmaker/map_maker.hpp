@@ -80,9 +80,9 @@ class MapMaker {
   void update_depth_stats(KeyFrame& keyframe);
   // The keyframe `keyframe` searches for new points against (epipolar_partner.hpp).
   std::shared_ptr<KeyFrame> epipolar_partner(const KeyFrame& keyframe) const;
-  // Hands the points that survived (grouped by source keyframe) to the
-  // semantic worker's queue, if there is one.
-  void hand_off(const std::vector<std::shared_ptr<MapPoint>>& points);
+  // Queues the keyframe's measurements (only those of `only`'s points, if
+  // given) for the semantic worker.
+  void hand_off(const std::shared_ptr<KeyFrame>& keyframe, const NewPoints* only = nullptr);
 
   Camera camera_;
   Map& map_;

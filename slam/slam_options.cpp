@@ -1,6 +1,10 @@
 #include "slam/slam_options.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/config/config_node.hpp"
+#include "core/map/semantic_classes.hpp"
 
 namespace facadeslam {
 namespace {
@@ -66,7 +70,47 @@ void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m
   c.finish();
 }
 
+std::vector<std::string> class_names() {
+  std::vector<std::string> names;
+  for (const SemanticClass& c : kSemanticClasses) names.emplace_back(c.name);
+  return names;
+}
+
 }  // namespace
+
+ClassVotes SemanticsOptions::class_weights() const {
+  ClassVotes weights{};
+  float largest = 0.f;
+  for (std::size_t c = 0; c < weights.size(); ++c) {
+    weights[c] = static_cast<float>(std::pow(static_cast<double>(class_prior[c]), class_prior_weight));
+    largest = std::max(largest, weights[c]);
+  }
+  for (float& w : weights) w /= largest;
+  return weights;
+}
+
+SemanticsOptions load_semantics_options(const std::filesystem::path& path, SemanticsOptions options) {
+  const ConfigNode root = ConfigNode::load_file(path);
+  options.enabled = root.get_bool("enabled", options.enabled);
+  if (root.has("model")) options.model = root.get_string("model");
+  if (const auto prior = root.optional_child("class_prior")) {
+    for (const SemanticClass& c : kSemanticClasses)
+      options.class_prior[c.id] = static_cast<float>(prior->get_double(std::string(c.name), Range::positive()));
+    prior->finish();
+  }
+  options.class_prior_weight = root.get_double("class_prior_weight", Range::closed(0, 1), options.class_prior_weight);
+  if (root.has("unreliable_classes")) {
+    options.unreliable_classes.reset();
+    for (const std::string& name : root.get_choices("unreliable_classes", class_names()))
+      options.unreliable_classes.set(*semantic_class_by_name(name));
+  }
+  options.min_confidence = root.get_double("min_confidence", Range::closed(0, 1), options.min_confidence);
+  options.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), options.unreliable_weight);
+  options.min_reliable_points =
+      root.get_int("min_reliable_points", Range::closed(0, 100000), options.min_reliable_points);
+  root.finish();
+  return options;
+}
 
 SlamOptions load_slam_options(const std::filesystem::path& path) {
   SlamOptions options;

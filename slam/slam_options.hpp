@@ -1,18 +1,44 @@
 #pragma once
 // Options of the whole SLAM system, loaded from configs/slam.yaml (every key
 // optional, defaults are PTAM's; unknown keys and bad values are errors).
+#include <bitset>
 #include <filesystem>
 
+#include "core/map/map_point.hpp"
 #include "mapmaker/map_maker_options.hpp"
 #include "slam/init/init_options.hpp"
 #include "tracker/tracker_options.hpp"
 
 namespace facadeslam {
 
-// The semantic worker (semantics/worker/): off unless a model is given.
+// The semantic worker (semantics/worker/) and label-aware tracking, from
+// configs/semantics.yaml (load_semantics_options; every key is explained
+// there). Off unless a model is given.
 struct SemanticsOptions {
   bool enabled = false;
   std::filesystem::path model;  // a .fsmodel (or OpenCV YAML) forest model
+  // How common each class is (any scale): LabelMeFacade train.txt's grid
+  // keypoints per class, what the shipped model was trained on.
+  ClassVotes class_prior{16751, 176887, 15726, 2864, 20267, 56697, 48167, 32446, 13215};
+  // The shipped forest is class-balanced, so its votes ignore how common a
+  // class is; each observation's votes are multiplied by prior^weight
+  // (0 = the forest's votes as they are, 1 = the full prior).
+  double class_prior_weight = 0.5;
+  // The tracker does not search points labelled with one of these classes at
+  // `min_confidence` or more (moving or unstable things). Default: car,
+  // vegetation, sky, various.
+  std::bitset<kSemanticClasses.size()> unreliable_classes{(1u << 2) | (1u << 7) | (1u << 6) | (1u << 0)};
+  double min_confidence = 0.5;
+  // Their weight in the pose update: 0 leaves them out of the search. Down-
+  // weighting is as good as leaving out where things move (street-dynamic
+  // 0.246 % against 0.244 %) and does not starve tracking where the
+  // "unreliable" things stand still (the demo's tree): docs/benchmarks.md.
+  double unreliable_weight = 0.1;
+  // ... unless fewer than this many other points are in view.
+  int min_reliable_points = 100;
+
+  // prior^weight per class, scaled so the largest is 1.
+  ClassVotes class_weights() const;
 };
 
 struct SlamOptions {
@@ -28,5 +54,7 @@ struct SlamOptions {
 };
 
 SlamOptions load_slam_options(const std::filesystem::path& path);
+// Reads configs/semantics.yaml's keys over `defaults`.
+SemanticsOptions load_semantics_options(const std::filesystem::path& path, SemanticsOptions defaults = {});
 
 }  // namespace facadeslam

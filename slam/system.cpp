@@ -28,14 +28,25 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
   semantics::ForestModel model = semantics::load_forest_model(options.model);
   if (model.classes != semantics::labelmefacade_class_table())
     fail_file(options.model, "a model for LabelMeFacade's nine classes (the map's class table)");
-  return std::make_unique<semantics::SemanticWorker>(std::move(model), queue);
+  return std::make_unique<semantics::SemanticWorker>(std::move(model), queue, options.class_weights());
+}
+
+// With labels coming, the tracker leaves out points of unreliable classes.
+SlamOptions with_label_aware_tracking(SlamOptions options) {
+  if (options.semantics.enabled) {
+    options.tracker.unreliable_classes = options.semantics.unreliable_classes;
+    options.tracker.unreliable_min_confidence = static_cast<float>(options.semantics.min_confidence);
+    options.tracker.min_reliable_points = options.semantics.min_reliable_points;
+    options.tracker.unreliable_weight = options.semantics.unreliable_weight;
+  }
+  return options;
 }
 
 }  // namespace
 
 System::System(Camera camera, SlamOptions options)
     : camera_(std::move(camera)),
-      options_(std::move(options)),
+      options_(with_label_aware_tracking(std::move(options))),
       worker_(make_worker(options_.semantics, new_points_)),
       map_maker_(camera_, map_, queue_, options_.mapmaker, worker_ ? &new_points_ : nullptr),
       tracker_(camera_, map_, queue_, options_.tracker),

@@ -108,11 +108,13 @@ struct NormalEquations {
   }
 };
 
-// Tukey weights of all measurements (0 where unusable); returns the count > 0.
-int tukey_weights(const Linearisation& lin, double squared_cut, std::vector<double>& weights) {
+// Tukey weights of all measurements times their prior weights (0 where
+// unusable); returns the count > 0.
+int tukey_weights(const Linearisation& lin, double squared_cut, std::span<const PoseMeasurement> measurements,
+                  std::vector<double>& weights) {
   int positive = 0;
   for (std::size_t i = 0; i < weights.size(); ++i) {
-    weights[i] = lin.usable[i] ? tukey_weight(lin.squared_norm(i), squared_cut) : 0.0;
+    weights[i] = lin.usable[i] ? measurements[i].weight * tukey_weight(lin.squared_norm(i), squared_cut) : 0.0;
     positive += weights[i] > 0.0;
   }
   return positive;
@@ -140,7 +142,9 @@ Eigen::Matrix<double, 2, 6> pose_measurement_jacobian(const SE3d& T_c_w, const E
 PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement> measurements,
                              const Camera& camera, const PoseUpdateOptions& options) {
   for (const PoseMeasurement& m : measurements)
-    if (m.level < 0 || m.level >= kPyramidLevels)
+    if (!(m.weight >= 0.0 && m.weight <= 1.0))
+      throw Error("update_pose: a measurement's weight is " + std::to_string(m.weight) + ", expected 0..1");
+    else if (m.level < 0 || m.level >= kPyramidLevels)
       throw Error("update_pose: a measurement's pyramid level is " + std::to_string(m.level) + ", expected 0.." +
                   std::to_string(kPyramidLevels - 1));
   PoseUpdateResult result;
@@ -155,7 +159,7 @@ PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement>
   camera.visit([&](const auto& model) {
     for (int it = 0; it < options.max_iterations; ++it) {
       const double sigma2 = lin.compute(model, result.T_c_w, measurements, options);
-      tukey_weights(lin, c2 * sigma2, result.weights);
+      tukey_weights(lin, c2 * sigma2, measurements, result.weights);
       normal.compute(lin, result.weights);
       Vector6d delta;
       if (!solve_positive_definite(normal.H, normal.g, delta)) break;
@@ -170,7 +174,7 @@ PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement>
 
     // Weights, inliers, RMS and information at the returned pose.
     result.sigma_squared = lin.compute(model, result.T_c_w, measurements, options);
-    result.num_inliers = tukey_weights(lin, c2 * result.sigma_squared, result.weights);
+    result.num_inliers = tukey_weights(lin, c2 * result.sigma_squared, measurements, result.weights);
     double sum_sq_px = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       if (result.weights[i] == 0.0) continue;

@@ -33,6 +33,7 @@ struct PoseMeasurement {
   Eigen::Vector3d p_w{0, 0, 0};
   Eigen::Vector2d pixel{0, 0};  // found position, level-0 pixels
   int level = 0;                // pyramid level it was searched at
+  double weight = 1.0;          // prior weight, multiplies the Tukey weight (label-aware tracking)
 };
 
 struct PoseUpdateOptions {

@@ -50,9 +50,16 @@ void Tracker::start(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Mat
   last_keyframe_frame_ = frame_index;
 }
 
+bool Tracker::unreliable(const MapPoint& point) const {
+  if (options_.unreliable_classes.none()) return false;
+  const SemanticLabel label = point.label();
+  return label.label < options_.unreliable_classes.size() && options_.unreliable_classes.test(label.label) &&
+         label.confidence >= options_.unreliable_min_confidence;
+}
+
 std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
-                                                     const SE3d& T_c_w) const {
-  std::vector<Candidate> out;
+                                                     const SE3d& T_c_w, int* dropped) const {
+  std::vector<Candidate> out, left_out;
   out.reserve(points.size());
   const Eigen::Matrix3d R_c_w = T_c_w.rotation_matrix();
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -64,7 +71,19 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
     const Eigen::Matrix2d warp = patch::patch_warp(p_c, R_c_w, points[i].view_geometry, camera_);
     const int level = patch::choose_search_level(warp.determinant(), options_.templates);
     if (level < 0) continue;
-    out.push_back({i, px, warp, level});
+    // Down-weighted points are searched like any other (pose_measurements
+    // gives them their weight); only a weight of 0 leaves them out.
+    const bool left = options_.unreliable_weight <= 0.0 && unreliable(*points[i].point);
+    (left ? left_out : out).push_back({i, px, warp, level});
+  }
+  // Labels must never starve the tracker: where the view is mostly of
+  // unreliable classes (a tree filling it, or a forest that calls a facade
+  // vegetation), the points are searched after all and the robust pose
+  // update has the last word.
+  if (static_cast<int>(out.size()) < options_.min_reliable_points) {
+    out.insert(out.end(), left_out.begin(), left_out.end());
+  } else if (dropped) {
+    *dropped += static_cast<int>(left_out.size());
   }
   return out;
 }
@@ -101,10 +120,9 @@ std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>
   return found;
 }
 
-namespace {
-
-std::vector<PoseMeasurement> to_pose_measurements(const std::vector<PointSnapshot>& points,
-                                                           const std::vector<TrackedMeasurement>& found) {
+std::vector<PoseMeasurement> Tracker::pose_measurements(const std::vector<PointSnapshot>& points,
+                                                        const std::vector<TrackedMeasurement>& found,
+                                                        int* down_weighted) const {
   // The snapshot's geometry, not the live point's: the map maker may move
   // points while we track, and we must use one consistent copy.
   std::unordered_map<const MapPoint*, const PointGeometry*> geometry;
@@ -112,11 +130,16 @@ std::vector<PoseMeasurement> to_pose_measurements(const std::vector<PointSnapsho
   for (const auto& p : points) geometry.emplace(p.point.get(), &p.geometry);
   std::vector<PoseMeasurement> out;
   out.reserve(found.size());
-  for (const auto& m : found) out.push_back({geometry.at(m.point.get())->p_w, m.pixel, m.level});
+  for (const auto& m : found) {
+    double weight = 1.0;
+    if (unreliable(*m.point)) {
+      weight = options_.unreliable_weight;
+      if (down_weighted) ++*down_weighted;
+    }
+    out.push_back({geometry.at(m.point.get())->p_w, m.pixel, m.level, weight});
+  }
   return out;
 }
-
-}  // namespace
 
 std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const Frame& frame,
                                                     TrackingResult& result) {
@@ -139,7 +162,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
     result.timings.coarse_ms = t0.elapsed_ms();
     if (result.coarse_found >= options_.coarse_min_found) {
       const Stopwatch t1;
-      const auto measurements = to_pose_measurements(points, found);
+      const auto measurements = pose_measurements(points, found, nullptr);
       const auto update = update_pose(T_c_w, measurements, camera_, options_.pose);
       if (update.ok) {
         T_c_w = update.T_c_w;
@@ -151,7 +174,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
 
   // Fine stage: all levels, tight radius, from the coarse pose.
   const Stopwatch t0;
-  std::vector<Candidate> candidates = project_map(points, T_c_w);
+  std::vector<Candidate> candidates = project_map(points, T_c_w, &result.points_dropped);
   std::shuffle(candidates.begin(), candidates.end(), rng);
   result.fine_counts.projected = static_cast<int>(candidates.size());
   std::vector<TrackedMeasurement> found = search(points, candidates, image, fine_radius, options_.fine_max_points,
@@ -161,7 +184,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
   const Stopwatch t1;
   std::vector<TrackedMeasurement> inliers;
   if (static_cast<int>(found.size()) >= 6) {
-    const auto measurements = to_pose_measurements(points, found);
+    const auto measurements = pose_measurements(points, found, &result.points_down_weighted);
     const auto update = update_pose(T_c_w, measurements, camera_, options_.pose);
     if (update.ok) {
       T_c_w = update.T_c_w;

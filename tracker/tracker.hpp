@@ -47,6 +47,8 @@ struct TrackingResult {
   bool keyframe_requested = false;
   int coarse_searched = 0, coarse_found = 0;
   int fine_searched = 0, fine_found = 0;
+  int points_dropped = 0;        // projecting into the image, but of an unreliable class: not searched
+  int points_down_weighted = 0;  // found, of an unreliable class: a lower weight in the pose update
   double inlier_rms_px = 0;
   SearchCounts fine_counts;
   StageTimings timings;
@@ -71,7 +73,16 @@ class Tracker {
  private:
   struct Candidate;  // a projected map point (tracker.cpp)
 
-  std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w) const;
+  // Map points that project into the image with a usable warp, except those
+  // of unreliable classes (counted in `dropped`, if given).
+  std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w,
+                                     int* dropped = nullptr) const;
+  bool unreliable(const MapPoint& point) const;
+  // The found points as pose-update measurements (snapshot geometry),
+  // unreliable ones with their lower weight (counted in `down_weighted`).
+  std::vector<PoseMeasurement> pose_measurements(const std::vector<PointSnapshot>& points,
+                                                 const std::vector<TrackedMeasurement>& found,
+                                                 int* down_weighted) const;
   // Searches up to `max_points` of `candidates` (in order) in the frame's
   // search image and returns the measurements found; `searched` counts the
   // attempts, `counts` (optional) why the others failed.

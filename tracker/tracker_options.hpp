@@ -1,9 +1,11 @@
 #pragma once
 // Every tunable of the tracker, with PTAM's values as defaults. Loaded from
 // the `tracker:` section of configs/slam.yaml (slam/slam_options.hpp).
+#include <bitset>
 #include <cstdint>
 
 #include "core/image/image_pyramid.hpp"
+#include "core/map/semantic_classes.hpp"
 #include "core/patch/patch_search.hpp"
 #include "core/patch/patch_warp.hpp"
 #include "tracker/pose_update.hpp"
@@ -68,6 +70,18 @@ struct TrackerOptions {
   // leaves the map: forward motion at 10 Hz), at most every this many frames.
   double keyframe_min_overlap = 0.9;
   int keyframe_min_frames_overlap = 2;
+
+  // Label-aware tracking (set from configs/semantics.yaml when semantics are
+  // on): a point labelled with one of these classes at this confidence or
+  // more is neither searched nor used for the pose and the keyframe
+  // decision: cars drive off, trees sway, the sky has no depth.
+  std::bitset<kSemanticClasses.size()> unreliable_classes;  // none: labels are ignored
+  float unreliable_min_confidence = 0.5f;
+  // Their weight in the pose update (Tukey's times this); 0 leaves them out
+  // of the search altogether ...
+  double unreliable_weight = 0.0;
+  // ... unless fewer than this many other points project into the image.
+  int min_reliable_points = 100;
 
   std::uint64_t seed = 1;  // point-sampling order; fixed for reproducible runs
 };

@@ -25,6 +25,8 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
     ++lost;
   }
   relocalisations += r.status == FrameStatus::relocalised;
+  points_dropped += static_cast<std::size_t>(r.tracking.points_dropped);
+  points_down_weighted += static_cast<std::size_t>(r.tracking.points_down_weighted);
   pyramid_ms.push_back(r.pyramid_ms);
   total_ms.push_back(r.total_ms);
   if (r.status == FrameStatus::tracking || r.status == FrameStatus::relocalised) {

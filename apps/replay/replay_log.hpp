@@ -12,6 +12,8 @@ namespace facadeslam::apps {
 
 struct ReplayLog {
   std::size_t frames = 0, tracked = 0, lost = 0, relocalisations = 0;
+  // Of unreliable classes, summed over the frames: not searched / down-weighted.
+  std::size_t points_dropped = 0, points_down_weighted = 0;
   Trajectory trajectory;  // camera-to-world of every frame with a pose
   std::vector<double> pyramid_ms, coarse_ms, fine_ms, pose_ms, total_ms;
 

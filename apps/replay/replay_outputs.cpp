@@ -23,7 +23,7 @@ Trajectory keyframe_trajectory(const Map& map) {
 }
 
 // What the semantic worker did, and the labels the map ended with.
-Json semantics_summary(const ReplayRunInfo& info, const System& system) {
+Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const System& system) {
   Json out = Json::object();
   const auto stats = system.semantic_stats();
   out["enabled"] = stats.has_value();
@@ -42,13 +42,31 @@ Json semantics_summary(const ReplayRunInfo& info, const System& system) {
   }
   out["points_labelled"] = labelled;
   out["points_unlabelled"] = unlabelled;
+  // Points the tracker left out of the search, and found points it gave a
+  // lower weight, for their class; summed over the frames.
+  out["points_dropped_by_tracker"] = log.points_dropped;
+  out["points_down_weighted_by_tracker"] = log.points_down_weighted;
   Json classes = Json::object();
   for (const SemanticClass& c : kSemanticClasses) classes[std::string(c.name)] = counts[c.id];
   out["class_counts"] = classes;
+  if (info.label_accuracy) {
+    const semantics::MapLabelAccuracy& a = *info.label_accuracy;
+    out["label_accuracy"] = a.accuracy() ? Json(*a.accuracy()) : Json();
+    out["label_accuracy_points"] = a.evaluated;
+    Json per_class = Json::object();
+    for (const SemanticClass& c : kSemanticClasses)
+      if (const auto share = a.class_accuracy(c.id)) per_class[std::string(c.name)] = *share;
+    out["label_accuracy_per_class"] = per_class;
+  }
   out["worker_ms_per_keyframe"] = timing_summary(stats->keyframe_ms);
   double total_ms = 0.0;
   for (const double ms : stats->keyframe_ms) total_ms += ms;
-  out["worker_us_per_point"] = stats->points_labelled ? 1000.0 * total_ms / static_cast<double>(stats->points_labelled) : 0.0;
+  // Per observation: the worker describes and classifies a point once per
+  // keyframe that measures it.
+  out["observations_labelled"] = stats->observations_labelled;
+  out["worker_us_per_point"] = stats->observations_labelled
+                                   ? 1000.0 * total_ms / static_cast<double>(stats->observations_labelled)
+                                   : 0.0;
   return out;
 }
 
@@ -90,7 +108,7 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   timings["global_ba_total_ms"] = stats.global_ba_ms;
   report["timings"] = timings;
   report["mapping"] = mapping_summary(stats);
-  report["semantics"] = semantics_summary(info, system);
+  report["semantics"] = semantics_summary(info, log, system);
   if (!paths.gt.empty() && log.trajectory.size() >= 3) {
     const Trajectory gt = read_trajectory(paths.gt);
     try {

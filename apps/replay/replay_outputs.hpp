@@ -4,10 +4,12 @@
 // cloud), the map file, report.json and, with ground truth, trajectory.png
 // (top view against it). Each file is written atomically.
 #include <filesystem>
+#include <optional>
 
 #include "apps/replay/replay_log.hpp"
 #include "core/camera/camera.hpp"
 #include "core/util/json.hpp"
+#include "semantics/evaluation/map_label_accuracy.hpp"
 #include "sequences/frame_source.hpp"
 #include "slam/system.hpp"
 
@@ -23,6 +25,8 @@ struct ReplayRunInfo {
   std::filesystem::path sequence, camera_file;
   bool synchronous = false;
   std::filesystem::path model;  // empty: semantics off
+  // Against ground-truth label images, when the sequence has them.
+  std::optional<semantics::MapLabelAccuracy> label_accuracy;
 };
 
 struct ReplayOutputs {

@@ -1,5 +1,6 @@
 #include "core/config/config_node.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -178,6 +179,22 @@ std::vector<double> ConfigNode::get_doubles(const std::string& key, std::size_t 
     if (!item.IsScalar() || !YAML::convert<double>::decode(item, value) || !range.contains(value))
       fail(key, expected, scalar_text(item));
     out.push_back(value);
+  }
+  return out;
+}
+
+std::vector<std::string> ConfigNode::get_choices(const std::string& key, const std::vector<std::string>& allowed) const {
+  const YAML::Node v = required(key);
+  std::string expected = "a list of distinct names out of";
+  for (const auto& a : allowed) expected += " " + a;
+  if (!v.IsSequence()) fail(key, expected, scalar_text(v));
+  std::vector<std::string> out;
+  for (const auto& item : v) {
+    const std::string text = item.IsScalar() ? item.Scalar() : scalar_text(item);
+    if (!item.IsScalar() || std::find(allowed.begin(), allowed.end(), text) == allowed.end() ||
+        std::find(out.begin(), out.end(), text) != out.end())
+      fail(key, expected, text);
+    out.push_back(text);
   }
   return out;
 }

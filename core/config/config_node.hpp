@@ -57,6 +57,8 @@ class ConfigNode {
   // A sequence of numbers; `size` 0 accepts any length.
   std::vector<double> get_doubles(const std::string& key, std::size_t size = 0,
                                   Range range = {}) const;
+  // A sequence of strings, each one of `allowed`; duplicates are an error.
+  std::vector<std::string> get_choices(const std::string& key, const std::vector<std::string>& allowed) const;
 
   // A nested mapping (required / optional).
   ConfigNode child(const std::string& key) const;

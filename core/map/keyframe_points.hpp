@@ -1,7 +1,9 @@
 #pragma once
-// The map maker -> semantic worker hand-off: a keyframe and the points it
-// just gave the map (their patches are in that keyframe's images), to be
-// labelled there.
+// The map maker -> semantic worker hand-off: a keyframe and the points newly
+// measured in it (the points it created and the points the tracker found in
+// it), each where the keyframe saw it, to be classified there. Every
+// measurement is handed over once, so each observation of a point adds one
+// set of votes to it.
 #include <memory>
 #include <vector>
 
@@ -11,9 +13,15 @@
 
 namespace facadeslam {
 
+struct PointInKeyFrame {
+  std::shared_ptr<MapPoint> point;
+  Eigen::Vector2d pixel{0, 0};  // level-0 pixel of its measurement in the keyframe
+};
+
 struct KeyFramePoints {
+  // Shared: the worker's images stay valid even if the map drops the keyframe.
   std::shared_ptr<const KeyFrame> keyframe;
-  std::vector<std::shared_ptr<MapPoint>> points;  // sources in `keyframe`
+  std::vector<PointInKeyFrame> points;
 };
 
 using KeyFramePointsQueue = BlockingQueue<KeyFramePoints>;

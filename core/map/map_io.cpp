@@ -57,6 +57,30 @@ Eigen::Vector3d get_vec(BinaryReader& in, const char* what) {
   return v;
 }
 
+ClassVotes get_votes(BinaryReader& in) {
+  ClassVotes votes{};
+  for (float& v : votes) {
+    v = in.get<float>("point votes");
+    if (!std::isfinite(v) || v < 0.f) in.corrupt("point votes must be finite and non-negative");
+  }
+  return votes;
+}
+
+// Version 2 kept only the label and its share. The winner keeps its share and
+// the rest is spread evenly over the other classes: the label and confidence
+// come out as they were (a winner's share is always above 1/9) and new votes
+// fuse with them as with one earlier observation.
+ClassVotes votes_from_version2_label(BinaryReader& in) {
+  const auto label = in.get<std::uint8_t>("point label");
+  const auto confidence = in.get<float>("point label");
+  ClassVotes votes{};
+  if (label == kUnlabelled) return votes;
+  if (label >= votes.size() || !(confidence > 0.f && confidence <= 1.f)) in.corrupt("point label out of range");
+  const float rest = (1.f - confidence) / static_cast<float>(votes.size() - 1);
+  for (std::size_t c = 0; c < votes.size(); ++c) votes[c] = c == label ? confidence : rest;
+  return votes;
+}
+
 void put_pyramid(BinaryWriter& out, const ImagePyramid& pyramid) {
   for (int l = 0; l < kPyramidLevels; ++l) {
     const auto& level = pyramid.level(l);
@@ -176,9 +200,7 @@ void save_map(const std::filesystem::path& path, const Map& map, const Camera& c
       put_vec(out, g.right_w);
       put_vec(out, g.down_w);
       put_vec(out, g.normal_w);
-      const auto label = p->label();
-      out.put(label.label);
-      out.put(label.confidence);
+      for (const float v : p->votes()) out.put(v);
       out.put(static_cast<std::uint8_t>(p->is_bad()));
     }
   });
@@ -199,9 +221,9 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   in.get_bytes(magic, sizeof magic, "magic");
   if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) fail_file(path, "not a facadeslam map file (bad magic)");
   const auto version = in.get<std::uint32_t>("format version");
-  if (version != kMapFormatVersion)
-    fail_file(path, "map format version " + std::to_string(version) + ", this build reads version " +
-                        std::to_string(kMapFormatVersion));
+  if (version < kOldestMapFormatVersion || version > kMapFormatVersion)
+    fail_file(path, "map format version " + std::to_string(version) + ", this build reads versions " +
+                        std::to_string(kOldestMapFormatVersion) + " to " + std::to_string(kMapFormatVersion));
   std::uint64_t stored_checksum = 0;
   std::memcpy(&stored_checksum, data.data() + data.size() - 8, 8);
   if (fnv1a64(data.data(), data.size() - 8) != stored_checksum)
@@ -273,10 +295,7 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     g.down_w = get_vec(in, "point geometry");
     g.normal_w = get_vec(in, "point geometry");
     auto point = std::make_shared<MapPoint>(id, std::move(source), g);
-    SemanticLabel label;
-    label.label = in.get<std::uint8_t>("point label");
-    label.confidence = in.get<float>("point label");
-    point->set_label(label);
+    point->set_votes(version >= 3 ? get_votes(in) : votes_from_version2_label(in));
     if (in.get<std::uint8_t>("point flags")) bad.push_back(point);
     points.push_back(std::move(point));
   }

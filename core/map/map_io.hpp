@@ -18,7 +18,10 @@
 
 namespace facadeslam {
 
-inline constexpr std::uint32_t kMapFormatVersion = 2;  // 2: frame index added, small blurry image rebuilt
+// 2: frame index added, small blurry image rebuilt; 3: per-class label votes
+// instead of label + confidence (version 2 files still load, see map_io.cpp).
+inline constexpr std::uint32_t kMapFormatVersion = 3;
+inline constexpr std::uint32_t kOldestMapFormatVersion = 2;
 
 void save_map(const std::filesystem::path& path, const Map& map, const Camera& camera);
 

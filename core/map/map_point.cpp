@@ -1,6 +1,7 @@
 #include "core/map/map_point.hpp"
 
 #include <bit>
+#include <mutex>
 
 namespace facadeslam {
 
@@ -19,6 +20,34 @@ void MapPoint::set_label(SemanticLabel label) {
   const std::uint64_t packed =
       (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(label.confidence)) << 8) | label.label;
   packed_label_.store(packed, std::memory_order_release);
+}
+
+SemanticLabel label_from_votes(const ClassVotes& votes) {
+  float total = 0.f;
+  std::size_t best = 0;
+  for (std::size_t c = 0; c < votes.size(); ++c) {
+    total += votes[c];
+    if (votes[c] > votes[best]) best = c;
+  }
+  if (!(total > 0.f)) return {};
+  return {static_cast<std::uint8_t>(best), votes[best] / total};
+}
+
+ClassVotes MapPoint::votes() const {
+  std::lock_guard lock(votes_mutex_);
+  return votes_;
+}
+
+void MapPoint::add_votes(const ClassVotes& votes) {
+  std::lock_guard lock(votes_mutex_);
+  for (std::size_t c = 0; c < votes.size(); ++c) votes_[c] += votes[c];
+  set_label(label_from_votes(votes_));
+}
+
+void MapPoint::set_votes(const ClassVotes& votes) {
+  std::lock_guard lock(votes_mutex_);
+  votes_ = votes;
+  set_label(label_from_votes(votes_));
 }
 
 PointGeometry fronto_parallel_geometry(const Eigen::Matrix3d& R_w_c, const Eigen::Vector3d& centre_w,

@@ -13,13 +13,16 @@
 // and other threads read the geometry from Map::snapshot_points or under
 // Map::read. The semantic label and the search counts are atomics: the
 // semantic worker and the tracker write them without blocking anyone.
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 
 #include <Eigen/Core>
 
 #include "core/image/image_pyramid.hpp"
+#include "core/map/semantic_classes.hpp"
 
 namespace facadeslam {
 
@@ -31,6 +34,15 @@ struct SemanticLabel {
   float confidence = 0.f;
   bool operator==(const SemanticLabel&) const = default;
 };
+
+// Per-class vote sums of a point's observations, indexed by class id: each
+// labelled observation adds the forest's vote shares (which sum to 1), so the
+// label is the arg-max and the confidence the winner's share of all votes.
+using ClassVotes = std::array<float, kSemanticClasses.size()>;
+
+// The label that votes give: arg-max (the lowest id on a tie) and its share;
+// kUnlabelled when there are no votes.
+SemanticLabel label_from_votes(const ClassVotes& votes);
 
 // Where a point's patch comes from; immutable once the point exists.
 struct PatchSource {
@@ -70,7 +82,12 @@ class MapPoint {
 
   // Lock-free; written by the semantic worker, read by the tracker and outputs.
   SemanticLabel label() const;
-  void set_label(SemanticLabel label);
+  // The vote sums behind the label. add_votes fuses one more observation's
+  // votes and updates the label; set_votes replaces them (loading a map).
+  // Only the semantic worker writes votes while the system runs.
+  ClassVotes votes() const;
+  void add_votes(const ClassVotes& votes);
+  void set_votes(const ClassVotes& votes);
 
   // Marked bad by the map maker (MapEditor::mark_bad); snapshots leave bad
   // points out and Map::remove_bad_points removes them.
@@ -93,7 +110,13 @@ class MapPoint {
   PointGeometry geometry_;
   PatchSource view_;
   PointGeometry view_geometry_;
+  void set_label(SemanticLabel label);
+
   std::atomic<std::uint64_t> packed_label_;  // label in the low byte, confidence bits above
+  // The votes are read rarely (outputs, the map file) and written by one
+  // thread; a mutex keeps a reader from seeing half an update.
+  mutable std::mutex votes_mutex_;
+  ClassVotes votes_{};
   std::atomic<bool> bad_{false};
   std::atomic<std::uint32_t> searched_{0}, found_{0};
 };

@@ -7,8 +7,17 @@
 
 namespace facadeslam::semantics {
 
-SemanticWorker::SemanticWorker(ForestModel model, KeyFramePointsQueue& queue)
-    : model_(std::move(model)), descriptor_(make_point_descriptor(model_.descriptor, model_.genome)), queue_(queue) {
+ClassVotes SemanticWorker::all_ones() {
+  ClassVotes ones;
+  ones.fill(1.f);
+  return ones;
+}
+
+SemanticWorker::SemanticWorker(ForestModel model, KeyFramePointsQueue& queue, const ClassVotes& class_weights)
+    : model_(std::move(model)),
+      class_weights_(class_weights),
+      descriptor_(make_point_descriptor(model_.descriptor, model_.genome)),
+      queue_(queue) {
   if (descriptor_->width() != model_.descriptor_width())
     throw Error("semantic worker: the model's forest takes " + std::to_string(model_.descriptor_width()) +
                 " values, its descriptor gives " + std::to_string(descriptor_->width()));
@@ -24,31 +33,39 @@ void SemanticWorker::label(const KeyFramePoints& job) {
   // The colour image may be missing (a grey sequence): nothing to describe.
   const bool describable = !colour.empty() && colour.type() == CV_8UC3;
   std::size_t skipped = 0;
-  for (const auto& p : job.points) {
-    if (!describable || p->is_bad()) {
+  for (const auto& [point, px] : job.points) {
+    // A point the map maker has dropped since the hand-off gets no votes.
+    if (!describable || point->is_bad()) {
       ++skipped;
       continue;
     }
-    const Eigen::Vector2d& px = p->source().pixel_level0;
     keypoints.emplace_back(static_cast<float>(std::clamp(px.x(), 0.0, colour.cols - 1.0)),
                            static_cast<float>(std::clamp(px.y(), 0.0, colour.rows - 1.0)));
-    points.push_back(p);
+    points.push_back(point);
   }
   if (!points.empty()) {
     const cv::Mat rows = descriptor_->compute(colour, keypoints);
     cv::Mat shares;
-    const std::vector<int> classes = model_.forest.predict(rows, shares);
+    model_.forest.predict(rows, shares);
     const std::vector<int>& columns = model_.forest.classes();
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto column = std::find(columns.begin(), columns.end(), classes[i]) - columns.begin();
-      const float share = shares.at<float>(static_cast<int>(i), static_cast<int>(column));
-      points[i]->set_label({static_cast<std::uint8_t>(classes[i]), share});
+      ClassVotes votes{};
+      float total = 0.f;
+      for (std::size_t k = 0; k < columns.size(); ++k) {
+        const auto c = static_cast<std::size_t>(columns[k]);
+        votes[c] = shares.at<float>(static_cast<int>(i), static_cast<int>(k)) * class_weights_[c];
+        total += votes[c];
+      }
+      // One observation, one vote: shares scaled back to sum to 1.
+      if (!(total > 0.f)) continue;
+      for (float& v : votes) v /= total;
+      points[i]->add_votes(votes);
     }
   }
   std::lock_guard lock(stats_mutex_);
   ++stats_.keyframes;
-  stats_.points_labelled += points.size();
-  stats_.points_skipped += skipped;
+  stats_.observations_labelled += points.size();
+  stats_.observations_skipped += skipped;
   stats_.keyframe_ms.push_back(watch.elapsed_ms());
 }
 

@@ -1,10 +1,12 @@
 #pragma once
-// The semantic worker, the third thread: takes each keyframe's new points
-// from the map maker (KeyFramePointsQueue), computes the model's descriptor
-// at every point's patch centre in the keyframe's colour image (the genome's
-// per-image planes once per keyframe), classifies it with the forest and
-// writes label + confidence (the winning class's vote share) into the point.
-// Labels are atomics in MapPoint: the tracker is never blocked.
+// The semantic worker, the third thread: takes each keyframe's newly measured
+// points from the map maker (KeyFramePointsQueue), computes the model's
+// descriptor where the keyframe saw each point in its colour image (the
+// genome's per-image planes once per keyframe), classifies it with the forest
+// and adds the forest's per-class vote shares to the point's vote sums: a
+// point seen by several keyframes gets the fused label of all its views (the
+// arg-max, with the winner's share as confidence). Labels are atomics in
+// MapPoint: the tracker is never blocked.
 //
 // Two ways to run it, as the map maker: a thread (start/stop) waiting on the
 // queue, or process_pending() called inline after the map maker (--sync),
@@ -22,14 +24,18 @@ namespace facadeslam::semantics {
 
 struct SemanticWorkerStats {
   std::size_t keyframes = 0;          // jobs done
-  std::size_t points_labelled = 0;
-  std::size_t points_skipped = 0;     // bad by the time they came, or no colour image
+  std::size_t observations_labelled = 0;  // votes added (a point gets one per keyframe measuring it)
+  std::size_t observations_skipped = 0;   // bad by the time they came, or no colour image
   std::vector<double> keyframe_ms;    // per job
 };
 
 class SemanticWorker {
  public:
-  SemanticWorker(ForestModel model, KeyFramePointsQueue& queue);
+  // `class_weights` multiply each observation's vote shares (then scaled to
+  // sum to 1) before they are fused: a prior on how common each class is
+  // (SemanticsOptions::class_weights). All ones: the forest's votes.
+  SemanticWorker(ForestModel model, KeyFramePointsQueue& queue, const ClassVotes& class_weights = all_ones());
+  static ClassVotes all_ones();
   ~SemanticWorker();
   SemanticWorker(const SemanticWorker&) = delete;
   SemanticWorker& operator=(const SemanticWorker&) = delete;
@@ -50,6 +56,7 @@ class SemanticWorker {
   void run();
 
   ForestModel model_;
+  ClassVotes class_weights_;
   std::unique_ptr<PointDescriptor> descriptor_;
   KeyFramePointsQueue& queue_;
   std::thread thread_;

@@ -4,6 +4,9 @@
 // threaded worker labels what is queued.
 #include "semantics/worker/semantic_worker.hpp"
 
+#include <cstdio>
+#include <numeric>
+
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
@@ -32,8 +35,9 @@ class SemanticWorkerTest : public ::testing::Test {
     KeyFramePoints out{keyframe, {}};
     for (const Corner& c : pyramid->level(0).corners) {
       if (out.points.size() == count) break;
-      out.points.push_back(std::make_shared<MapPoint>(out.points.size(), PatchSource{0, pyramid, 0, {c.x, c.y}},
-                                                      PointGeometry{}));
+      out.points.push_back({std::make_shared<MapPoint>(out.points.size(), PatchSource{0, pyramid, 0, {c.x, c.y}},
+                                                       PointGeometry{}),
+                            {c.x, c.y}});
     }
     return out;
   }
@@ -52,20 +56,56 @@ TEST_F(SemanticWorkerTest, LabelsEveryPointWithTheForestsVoteAtItsPatch) {
   // The same descriptor and forest, by hand.
   auto descriptor = make_point_descriptor(model_.descriptor, model_.genome);
   std::vector<cv::Point2f> keypoints;
-  for (const auto& p : points.points)
-    keypoints.emplace_back(static_cast<float>(p->source().pixel_level0.x()), static_cast<float>(p->source().pixel_level0.y()));
+  for (const auto& [p, px] : points.points) keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
   cv::Mat shares;
   const std::vector<int> expected = model_.forest.predict(descriptor->compute(colour_, keypoints), shares);
   for (std::size_t i = 0; i < points.points.size(); ++i) {
-    const SemanticLabel label = points.points[i]->label();
+    const SemanticLabel label = points.points[i].point->label();
     EXPECT_EQ(label.label, expected[i]) << "point " << i;
     EXPECT_GT(label.confidence, 0.f);
     EXPECT_LE(label.confidence, 1.f);
   }
   const SemanticWorkerStats stats = worker.stats();
   EXPECT_EQ(stats.keyframes, 1u);
-  EXPECT_EQ(stats.points_labelled, 40u);
-  EXPECT_EQ(stats.points_skipped, 0u);
+  EXPECT_EQ(stats.observations_labelled, 40u);
+  EXPECT_EQ(stats.observations_skipped, 0u);
+}
+
+// A point measured in a second keyframe gets that view's votes added to its
+// first view's: here the "second keyframe" sees each point where the first
+// saw another, so the fused votes are the two rows' sum.
+TEST_F(SemanticWorkerTest, FusesTheVotesOfEveryKeyframeThatMeasuresAPoint) {
+  KeyFramePointsQueue queue;
+  SemanticWorker worker(model_, queue);
+  const KeyFramePoints first = job(true, 20);
+  KeyFramePoints second = first;
+  for (std::size_t i = 0; i < second.points.size(); ++i) second.points[i].pixel = first.points[19 - i].pixel;
+  const std::vector<ClassVotes> alone = [&] {
+    std::vector<ClassVotes> votes;
+    worker.label(second);
+    for (const auto& [p, px] : second.points) votes.push_back(p->votes());
+    return votes;
+  }();
+  for (const auto& [p, px] : first.points) p->set_votes({});
+  worker.label(first);
+  std::vector<ClassVotes> first_only;
+  for (const auto& [p, px] : first.points) first_only.push_back(p->votes());
+  worker.label(second);
+
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < first.points.size(); ++i) {
+    const MapPoint& p = *first.points[i].point;
+    ClassVotes sum{};
+    for (std::size_t c = 0; c < sum.size(); ++c) {
+      sum[c] = first_only[i][c] + alone[i][c];
+      EXPECT_FLOAT_EQ(p.votes()[c], sum[c]) << "point " << i << " class " << c;
+    }
+    EXPECT_EQ(p.label(), label_from_votes(sum));
+    EXPECT_NEAR(std::accumulate(sum.begin(), sum.end(), 0.f), 2.f, 1e-4) << "two views, one vote each";
+    changed += label_from_votes(first_only[i]).label != p.label().label;
+  }
+  EXPECT_EQ(worker.stats().observations_labelled, 60u);
+  std::printf("fusion changed %zu of %zu labels\n", changed, first.points.size());
 }
 
 TEST_F(SemanticWorkerTest, SkipsBadPointsAndKeyframesWithoutColour) {
@@ -73,17 +113,19 @@ TEST_F(SemanticWorkerTest, SkipsBadPointsAndKeyframesWithoutColour) {
   SemanticWorker worker(model_, queue);
   const KeyFramePoints grey = job(false, 10);
   worker.label(grey);
-  for (const auto& p : grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
+  for (const auto& [p, px] : grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
 
   Map map;
   const KeyFramePoints coloured = job(true, 10);
-  map.add({}, coloured.points);
-  map.update([&](MapEditor& edit) { edit.mark_bad(*coloured.points[3]); });
+  std::vector<std::shared_ptr<MapPoint>> points;
+  for (const auto& [p, px] : coloured.points) points.push_back(p);
+  map.add({}, points);
+  map.update([&](MapEditor& edit) { edit.mark_bad(*points[3]); });
   worker.label(coloured);
-  EXPECT_EQ(coloured.points[3]->label().label, kUnlabelled);
-  EXPECT_NE(coloured.points[4]->label().label, kUnlabelled);
-  EXPECT_EQ(worker.stats().points_skipped, 11u);
-  EXPECT_EQ(worker.stats().points_labelled, 9u);
+  EXPECT_EQ(points[3]->label().label, kUnlabelled);
+  EXPECT_NE(points[4]->label().label, kUnlabelled);
+  EXPECT_EQ(worker.stats().observations_skipped, 11u);
+  EXPECT_EQ(worker.stats().observations_labelled, 9u);
 }
 
 TEST_F(SemanticWorkerTest, TheThreadLabelsWhatIsQueuedBeforeItStops) {
@@ -97,7 +139,7 @@ TEST_F(SemanticWorkerTest, TheThreadLabelsWhatIsQueuedBeforeItStops) {
   }
   worker.stop();
   for (const auto& j : jobs)
-    for (const auto& p : j.points) EXPECT_NE(p->label().label, kUnlabelled);
+    for (const auto& [p, px] : j.points) EXPECT_NE(p->label().label, kUnlabelled);
   EXPECT_EQ(worker.stats().keyframes, 3u);
 }
 

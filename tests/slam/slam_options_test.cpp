@@ -104,5 +104,62 @@ TEST(SlamOptions, RejectsBadValues) {
               HasSubstr("init_densify_min_parallax_deg"));
 }
 
+std::string semantics_error(const std::string& yaml) {
+  test::TempDir dir;
+  const auto path = dir / "semantics.yaml";
+  test::write_text(path, yaml);
+  try {
+    load_semantics_options(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error for:\n" << yaml;
+  return {};
+}
+
+// configs/semantics.yaml holds exactly the built-in defaults, which the
+// regression tests use.
+TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
+  SemanticsOptions defaults;
+  defaults.enabled = true;
+  defaults.model = "models/default.fsmodel";
+  const SemanticsOptions shipped = load_semantics_options(test::source_dir() / "configs" / "semantics.yaml");
+  EXPECT_EQ(shipped.enabled, defaults.enabled);
+  EXPECT_EQ(shipped.model, defaults.model);
+  EXPECT_EQ(shipped.class_prior, defaults.class_prior);
+  EXPECT_EQ(shipped.class_prior_weight, defaults.class_prior_weight);
+  EXPECT_EQ(shipped.unreliable_classes, defaults.unreliable_classes);
+  EXPECT_EQ(shipped.min_confidence, defaults.min_confidence);
+  EXPECT_EQ(shipped.min_reliable_points, defaults.min_reliable_points);
+  EXPECT_EQ(shipped.unreliable_weight, defaults.unreliable_weight);
+  for (const char* name : {"car", "vegetation", "sky", "various"})
+    EXPECT_TRUE(shipped.unreliable_classes.test(*semantic_class_by_name(name))) << name;
+}
+
+TEST(SemanticsOptions, ClassWeightsArePriorToTheWeight) {
+  SemanticsOptions o;
+  o.class_prior.fill(1.f);
+  o.class_prior[1] = 4.f;
+  o.class_prior_weight = 0.5;
+  const ClassVotes w = o.class_weights();
+  EXPECT_FLOAT_EQ(w[1], 1.f);
+  EXPECT_FLOAT_EQ(w[0], 0.5f);
+  o.class_prior_weight = 0.0;
+  EXPECT_FLOAT_EQ(o.class_weights()[0], 1.f);
+}
+
+TEST(SemanticsOptions, RejectsBadValues) {
+  EXPECT_THAT(semantics_error("unreliable_classes: [car, bus]\n"),
+              AllOf(HasSubstr("semantics.yaml"), HasSubstr("unreliable_classes"), HasSubstr("bus")));
+  EXPECT_THAT(semantics_error("min_confidence: 1.5\n"), HasSubstr("min_confidence"));
+  EXPECT_THAT(semantics_error("class_prior_weight: -1\n"), HasSubstr("class_prior_weight"));
+  EXPECT_THAT(semantics_error("class_prior: {car: 1}\n"), HasSubstr("class_prior.various"));
+  EXPECT_THAT(semantics_error("class_prior: {various: 1, building: 1, car: 1, door: 1, pavement: 1, road: 1, sky: 1, "
+                              "vegetation: 1, window: 0}\n"),
+              HasSubstr("class_prior.window"));
+  EXPECT_THAT(semantics_error("modell: x.fsmodel\n"), HasSubstr("modell"));
+  EXPECT_THAT(semantics_error("unreliable_weight: 2\n"), HasSubstr("unreliable_weight"));
+}
+
 }  // namespace
 }  // namespace facadeslam

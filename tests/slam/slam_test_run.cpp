@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "sequences/synth/scene_loader.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace facadeslam::test {
 
@@ -58,6 +59,21 @@ void SlamRunLog::add(FrameReport report) {
 
 double SlamRunLog::tracker_ms_median() const { return percentile(tracker_ms, 0.5); }
 double SlamRunLog::tracker_ms_p95() const { return percentile(tracker_ms, 0.95); }
+
+std::filesystem::path scene_file(const std::string& name) {
+  return source_dir() / "configs" / "scenes" / (name + ".yaml");
+}
+
+cv::Mat SceneFrames::render(int index) {
+  synth::SynthFrame frame = synthesizer_->render(index);
+  if (keep_labels_) labels_[static_cast<std::size_t>(index)] = frame.labels;
+  return frame.colour;
+}
+
+cv::Mat SceneFrames::labels(std::size_t index) const {
+  const auto it = labels_.find(index);
+  return it == labels_.end() ? cv::Mat() : it->second;
+}
 
 void run_frames(System& system, SceneFrames& scene, int first, int last, SlamRunLog& log, const FrameFilter& filter) {
   for (int i = first; i < last; ++i) {

@@ -5,6 +5,7 @@
 // figures are collected for the assertions and the report.
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@
 
 namespace facadeslam::test {
 
+// configs/scenes/NAME.yaml in the source tree.
+std::filesystem::path scene_file(const std::string& name);
+
 // A scene file's frames, rendered on demand.
 class SceneFrames {
  public:
@@ -27,7 +31,11 @@ class SceneFrames {
   int size() const { return spec_.frames; }
   const Camera& camera() const { return spec_.camera; }
   double timestamp(int index) const { return synthesizer_->timestamp(index); }
-  cv::Mat render(int index) { return synthesizer_->render(index).colour; }
+  // The colour image; with keep_labels(), its label image is kept too.
+  cv::Mat render(int index);
+  void keep_labels() { keep_labels_ = true; }
+  // Class ids (CV_8UC1) of a frame rendered since keep_labels(), else empty.
+  cv::Mat labels(std::size_t index) const;
   // Every frame's true camera-to-world pose.
   const Trajectory& ground_truth() const { return ground_truth_; }
 
@@ -35,6 +43,8 @@ class SceneFrames {
   synth::SceneSpec spec_;
   std::unique_ptr<synth::FrameSynthesizer> synthesizer_;
   Trajectory ground_truth_;
+  bool keep_labels_ = false;
+  std::map<std::size_t, cv::Mat> labels_;
 };
 
 // What happened to each frame of a run, and the figures the issue asks for.

@@ -13,8 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scene_file(const std::string& name) { return test::source_dir() / "configs" / "scenes" / (name + ".yaml"); }
-
 std::string list(const std::vector<std::size_t>& v) {
   std::string s;
   for (std::size_t i = 0; i < v.size() && i < 30; ++i) {
@@ -28,7 +26,7 @@ std::string list(const std::vector<std::size_t>& v) {
 // Whole sequence: initialises, then no frame lost, ATE within `max_percent`
 // of the path length.
 void expect_tracks_whole_street(const std::string& name, double max_percent) {
-  test::SceneFrames scene(scene_file(name));
+  test::SceneFrames scene(test::scene_file(name));
   System system(scene.camera(), test::synchronous_options());
   test::SlamRunLog log;
   test::run_frames(system, scene, 0, scene.size(), log);
@@ -69,7 +67,7 @@ TEST(StreetRegression, StreetLightingLosesNoFrameAndAteWithinTwoPercent) {
 TEST(StreetRegression, RelocalisesWithinTenFramesAfterTenBlackFrames) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
   constexpr int kFirstBlack = 100, kBlackFrames = 10, kFrames = 180;
-  test::SceneFrames scene(scene_file("street-pan"), kFrames);
+  test::SceneFrames scene(test::scene_file("street-pan"), kFrames);
   System system(scene.camera(), test::synchronous_options());
   test::SlamRunLog log;
   test::run_frames(system, scene, 0, scene.size(), log, [&](int i, cv::Mat image) {
@@ -109,7 +107,7 @@ TEST(StreetRegression, RelocalisesWithinTenFramesAfterTenBlackFrames) {
 TEST(StreetRegression, MapSavedMidSequenceKeepsTrackingInANewSystem) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
   constexpr int kSplit = 150;
-  test::SceneFrames scene(scene_file("street-pan"));
+  test::SceneFrames scene(test::scene_file("street-pan"));
   test::TempDir dir;
   const fs::path map_file = dir / "map.fslmap";
   test::SlamRunLog first;

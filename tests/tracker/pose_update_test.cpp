@@ -155,6 +155,36 @@ TEST(PoseUpdate, PointsBehindTheCameraAreIgnored) {
   EXPECT_LT(rotation_error(r.T_c_w, truth), 1e-9);
 }
 
+// Label-aware tracking: a coherent group of points that moved (a car pulling
+// away: 40 % of the measurements shifted by 3 px, too little for Tukey to
+// reject) pulls the pose at full weight and hardly at all at weight 0.1.
+TEST(PoseUpdate, PriorWeightsLimitWhatDownWeightedPointsCanPull) {
+  const Camera camera = test::test_camera();
+  const SE3d truth = true_pose();
+  auto m = exact_measurements(truth, camera, 200);
+  for (std::size_t i = 0; i < m.size(); i += 5)
+    for (std::size_t k = i; k < i + 2; ++k) m[k].pixel += Eigen::Vector2d(3.0, 0.0);
+  const double full = rotation_error(update_pose(perturbed(truth), m, camera).T_c_w, truth);
+  for (std::size_t i = 0; i < m.size(); i += 5)
+    for (std::size_t k = i; k < i + 2; ++k) m[k].weight = 0.1;
+  const PoseUpdateResult r = update_pose(perturbed(truth), m, camera);
+  ASSERT_TRUE(r.ok);
+  const double down = rotation_error(r.T_c_w, truth);
+  std::printf("[ moving 40%% ] rotation error %.2e rad at full weight, %.2e rad at weight 0.1\n", full, down);
+  EXPECT_LT(down, 0.25 * full);
+  EXPECT_LE(r.weights[0], 0.1);
+  EXPECT_GT(r.weights[2], 0.1);
+}
+
+TEST(PoseUpdate, RejectsAWeightOutsideZeroToOne) {
+  const Camera camera = test::test_camera();
+  auto m = exact_measurements(true_pose(), camera, 10);
+  m[3].weight = 1.5;
+  EXPECT_THROW(update_pose(true_pose(), m, camera), Error);
+  m[3].weight = std::nan("");
+  EXPECT_THROW(update_pose(true_pose(), m, camera), Error);
+}
+
 TEST(PoseUpdate, RejectsALevelOutsideThePyramid) {
   const Camera camera = test::test_camera();
   auto m = exact_measurements(true_pose(), camera, 10);

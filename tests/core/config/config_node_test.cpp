@@ -28,6 +28,16 @@ TEST(ConfigNode, ReadsValuesOfEveryType) {
   EXPECT_NO_THROW(c.finish());
 }
 
+TEST(ConfigNode, ListsOfNamesAreCheckedAgainstTheAllowedOnes) {
+  const auto c = ConfigNode::parse_string("ok: [car, sky]\nempty: []\nbad: [car, cat]\ntwice: [sky, sky]\n", "s.yaml");
+  const std::vector<std::string> allowed{"car", "sky", "road"};
+  EXPECT_EQ(c.get_choices("ok", allowed), (std::vector<std::string>{"car", "sky"}));
+  EXPECT_TRUE(c.get_choices("empty", allowed).empty());
+  EXPECT_THAT(error_of([&] { c.get_choices("bad", allowed); }),
+              AllOf(HasSubstr("s.yaml"), HasSubstr("'bad'"), HasSubstr("cat"), HasSubstr("car sky road")));
+  EXPECT_THAT(error_of([&] { c.get_choices("twice", allowed); }), HasSubstr("distinct"));
+}
+
 TEST(ConfigNode, FallbacksApplyOnlyWhenKeyIsAbsent) {
   const auto c = ConfigNode::parse_string("a: 3\n", "t.yaml");
   EXPECT_EQ(c.get_int("a", Range{}, 9), 3);

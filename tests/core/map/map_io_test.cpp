@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "core/map/binary_stream.hpp"
 #include "core/util/error.hpp"
 #include "tests/core/map/map_test_fixtures.hpp"
 #include "tests/support/test_support.hpp"
@@ -74,6 +75,7 @@ void expect_identical(const Map& a, const Map& b) {
     EXPECT_EQ(pa[i]->source().level, pb[i]->source().level);
     EXPECT_EQ(pa[i]->source().pixel_level0, pb[i]->source().pixel_level0);
     EXPECT_EQ(pa[i]->label(), pb[i]->label());
+    EXPECT_EQ(pa[i]->votes(), pb[i]->votes());
     EXPECT_EQ(pa[i]->is_bad(), pb[i]->is_bad());
   }
   EXPECT_EQ(a.next_point_id_value(), b.next_point_id_value());
@@ -131,7 +133,43 @@ TEST_F(MapIo, WrongVersionIsRejected) {
   write_file(dir / "v99.fslmap", data);
   Map loaded;
   EXPECT_THAT(error_of([&] { load_map(dir / "v99.fslmap", loaded); }),
-              AllOf(HasSubstr("v99.fslmap"), HasSubstr("version 99"), HasSubstr("reads version 2")));
+              AllOf(HasSubstr("v99.fslmap"), HasSubstr("version 99"), HasSubstr("reads versions 2 to 3")));
+}
+
+// Rewrites a version 3 file as version 2 did: each point's votes (the last
+// 9 floats before its flag byte) become its label and confidence. Point
+// records are the file's last bytes before the checksum.
+std::string as_version2(const std::string& v3, const std::vector<std::shared_ptr<MapPoint>>& points) {
+  constexpr std::size_t kHead = 8 + 8 + 4 + 2 * 8 + 12 * 8, kVotes = sizeof(ClassVotes), kRecord = kHead + kVotes + 1;
+  const std::size_t body = v3.size() - 8, first = body - points.size() * kRecord;
+  std::string v2 = v3.substr(0, first);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t at = first + i * kRecord;
+    v2 += v3.substr(at, kHead);
+    const SemanticLabel label = points[i]->label();
+    v2.push_back(static_cast<char>(label.label));
+    v2.append(reinterpret_cast<const char*>(&label.confidence), sizeof(float));
+    v2.push_back(v3[at + kHead + kVotes]);
+  }
+  v2[8] = 2;
+  const std::uint64_t checksum = fnv1a64(v2.data(), v2.size());
+  v2.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
+  return v2;
+}
+
+TEST_F(MapIo, Version2MapsLoadWithTheirLabels) {
+  write_file(dir / "v2.fslmap", as_version2(read_file(file), map.points()));
+  Map loaded;
+  load_map(dir / "v2.fslmap", loaded, &camera);
+  const auto pa = map.points(), pb = loaded.points();
+  ASSERT_EQ(pa.size(), pb.size());
+  std::size_t labelled = 0;
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    EXPECT_EQ(pa[i]->label().label, pb[i]->label().label);
+    EXPECT_NEAR(pa[i]->label().confidence, pb[i]->label().confidence, 1e-6);
+    labelled += pa[i]->label().label != kUnlabelled;
+  }
+  EXPECT_GT(labelled, 5u);
 }
 
 TEST_F(MapIo, NotAMapFile) {

@@ -9,14 +9,33 @@
 namespace facadeslam {
 namespace {
 
-TEST(MapPoint, LabelRoundTripsThroughTheAtomic) {
-  Map map;
-  test::build_test_map(map, 1);
-  auto p = map.points().front();
-  p->set_label({7, 0.875f});
-  EXPECT_EQ(p->label(), (SemanticLabel{7, 0.875f}));
-  p->set_label({kUnlabelled, 0.f});
-  EXPECT_EQ(p->label().label, kUnlabelled);
+ClassVotes votes_for(std::initializer_list<std::pair<std::size_t, float>> shares) {
+  ClassVotes votes{};
+  for (const auto& [c, share] : shares) votes[c] = share;
+  return votes;
+}
+
+TEST(MapPoint, VotesGiveTheLabelAndItsShare) {
+  MapPoint p(0, {}, {});
+  p.set_votes(votes_for({{7, 0.875f}, {1, 0.125f}}));
+  EXPECT_EQ(p.label(), (SemanticLabel{7, 0.875f}));
+  p.set_votes({});
+  EXPECT_EQ(p.label().label, kUnlabelled);
+}
+
+TEST(MapPoint, LaterObservationsAreFusedIntoTheVoteSums) {
+  MapPoint p(0, {}, {});
+  p.add_votes(votes_for({{2, 0.6f}, {1, 0.4f}}));  // first view: car
+  EXPECT_EQ(p.label(), (SemanticLabel{2, 0.6f}));
+  p.add_votes(votes_for({{1, 0.9f}, {2, 0.1f}}));  // second view outvotes it
+  EXPECT_EQ(p.label().label, 1);
+  EXPECT_FLOAT_EQ(p.label().confidence, 1.3f / 2.0f);
+  EXPECT_FLOAT_EQ(p.votes()[2], 0.7f);
+}
+
+TEST(MapPoint, TiesGoToTheLowerClassId) {
+  EXPECT_EQ(label_from_votes(votes_for({{5, 0.5f}, {3, 0.5f}})).label, 3);
+  EXPECT_EQ(label_from_votes({}).label, kUnlabelled);
 }
 
 TEST(MapPoint, NewPointsAreUnlabelled) {
@@ -166,7 +185,7 @@ TEST(Map, ConcurrentReadersAndWriterSeeWholeObjects) {
   });
   do {
     const auto snapshot = map.snapshot_points();
-    for (const auto& s : snapshot) s.point->set_label({1, 0.5f});
+    for (const auto& s : snapshot) s.point->add_votes(votes_for({{1, 0.5f}}));
     EXPECT_GE(snapshot.size(), 10u);
     if (!reading.exchange(true)) reading.notify_one();
   } while (!stop);

@@ -35,7 +35,12 @@ void build_test_map(Map& map, int n_points) {
     g.down_w = Eigen::Vector3d(0, 0.01, 0);
     g.normal_w = Eigen::Vector3d(0, 0, -1);
     auto p = std::make_shared<MapPoint>(map.new_point_id(), source, g);
-    if (i % 3 == 0) p->set_label({static_cast<std::uint8_t>(i % 9), 0.25f + 0.01f * static_cast<float>(i)});
+    if (i % 3 == 0) {
+      ClassVotes votes{};
+      votes[static_cast<std::size_t>(i % 9)] = 0.5f + 0.01f * static_cast<float>(i);
+      votes[static_cast<std::size_t>((i + 4) % 9)] = 0.25f;
+      p->set_votes(votes);
+    }
     for (std::size_t k = 0; k < measurements.size(); ++k)
       measurements[k][p->id()] = {i % 4, {20.0 + i + static_cast<double>(k), 30.25 + i}, k == 0};
     points.push_back(p);

@@ -1,0 +1,40 @@
+#pragma once
+// Ground-truth label images for a replay (`--gt-labels DIR`, or the `label/`
+// folder a synthetic sequence has beside its rgb.txt): one LabelMeFacade-
+// coloured PNG per frame, named like the frame's colour image. They give
+// report.json its label accuracy (semantics/evaluation/map_label_accuracy.hpp).
+#include <cstddef>
+#include <filesystem>
+#include <map>
+
+#include <opencv2/core.hpp>
+
+#include "core/image/frame.hpp"
+
+namespace facadeslam::apps {
+
+// The folder to use: `given` if not empty (it must be a folder), else
+// `label/` beside the sequence when it has one, else empty.
+std::filesystem::path find_ground_truth_labels(const std::filesystem::path& sequence,
+                                               const std::filesystem::path& given);
+
+class GroundTruthLabelFiles {
+ public:
+  explicit GroundTruthLabelFiles(std::filesystem::path folder);
+
+  // Notes where frame `frame.index`'s labels are. The first frame's label
+  // image is read at once, so a folder that does not fit the sequence fails
+  // before the work rather than after it.
+  void add(const Frame& frame);
+
+  // Class ids (CV_8UC1) of a frame added before. Throws Error naming the file
+  // when it is missing, not a label image, or not the frame's size.
+  cv::Mat class_ids(std::size_t frame_index) const;
+
+ private:
+  std::filesystem::path folder_;
+  std::map<std::size_t, std::filesystem::path> files_;
+  cv::Size frame_size_;
+};
+
+}  // namespace facadeslam::apps
