@@ -202,5 +202,42 @@ TEST_F(ReplayCli, SemanticsLabelTheMapAndAMissingModelFailsFirst) {
   EXPECT_FALSE(fs::exists(dir_ / "missing"));
 }
 
+// A synthetic sequence's label/ folder is found on its own and gives the
+// report its label accuracy; a --gt-labels folder that does not fit the
+// sequence (no such folder, a label image of another size) fails before the
+// work, naming the file, with nothing written.
+TEST_F(ReplayCli, GroundTruthLabelsGiveTheLabelAccuracyAndBadOnesFailFirst) {
+  const fs::path sequence = render_demo("demo", 40);
+  std::string on = "-q replay ";
+  on.append(quoted(sequence)).append(" --sync --out ").append(quoted(dir_ / "on"));
+  const test::CliResult r = run(on + " --model " + quoted(test::source_dir() / "models" / "default.fsmodel"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string report = test::read_file_text(dir_ / "on" / "report.json");
+  const double accuracy = test::json_number(report, "label_accuracy");
+  EXPECT_GT(accuracy, 0.3) << report;
+  EXPECT_LE(accuracy, 1.0) << report;
+  EXPECT_THAT(report, HasSubstr("\"label_accuracy_per_class\""));
+  EXPECT_THAT(report, HasSubstr("\"points_down_weighted_by_tracker\""));
+
+  std::string absent = "-q replay ";
+  absent.append(quoted(sequence)).append(" --sync --gt-labels ").append(quoted(dir_ / "nowhere"));
+  absent.append(" --out ").append(quoted(dir_ / "absent"));
+  expect_one_line_error(run(absent), 1, "nowhere");
+  EXPECT_FALSE(fs::exists(dir_ / "absent"));
+
+  const fs::path small = dir_ / "small-labels";
+  fs::create_directories(small);
+  for (const auto& entry : fs::directory_iterator(sequence / "label")) {
+    cv::Mat label = cv::imread(entry.path().string(), cv::IMREAD_COLOR);
+    cv::resize(label, label, {label.cols / 2, label.rows / 2}, 0, 0, cv::INTER_NEAREST);
+    cv::imwrite((small / entry.path().filename()).string(), label);
+  }
+  std::string wrong = "-q replay ";
+  wrong.append(quoted(sequence)).append(" --sync --gt-labels ").append(quoted(small));
+  wrong.append(" --out ").append(quoted(dir_ / "wrong"));
+  expect_one_line_error(run(wrong), 1, "label image is 320x240, the frame is 640x480");
+  EXPECT_FALSE(fs::exists(dir_ / "wrong"));
+}
+
 }  // namespace
 }  // namespace facadeslam
