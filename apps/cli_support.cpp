@@ -34,4 +34,17 @@ void require_writable_output(const std::filesystem::path& path) {
   std::filesystem::remove(probe, ec);
 }
 
+std::pair<int, int> parse_image_size(const std::string& text, const std::string& option) {
+  const auto x = text.find('x');
+  const auto digits = [](const std::string& s) {
+    return !s.empty() && s.size() <= 5 && s.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (x == std::string::npos || !digits(text.substr(0, x)) || !digits(text.substr(x + 1)))
+    throw Error(option + ": expected WIDTHxHEIGHT such as 640x480, got '" + text + "'");
+  const int w = std::stoi(text.substr(0, x)), h = std::stoi(text.substr(x + 1));
+  if (w < 16 || h < 16 || w > 8192 || h > 8192)
+    throw Error(option + ": expected a width and height in [16, 8192], got '" + text + "'");
+  return {w, h};
+}
+
 }  // namespace facadeslam::apps

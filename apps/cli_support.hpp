@@ -3,6 +3,8 @@
 // name what was expected.
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <string>
+#include <utility>
 
 namespace facadeslam::apps {
 
@@ -19,5 +21,9 @@ void require_file(const std::filesystem::path& path, const std::string& what);
 // (created if needed) and takes a new file (probed with an empty file that
 // is removed again). For checks before long runs.
 void require_writable_output(const std::filesystem::path& path);
+
+// "640x480" -> (640, 480), each side in [16, 8192]; an Error naming
+// `option` otherwise.
+std::pair<int, int> parse_image_size(const std::string& text, const std::string& option);
 
 }  // namespace facadeslam::apps

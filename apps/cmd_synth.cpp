@@ -28,20 +28,6 @@ struct SynthCliOptions {
   int sheet_frames = 6;
 };
 
-// "640x480" -> (640, 480); Error otherwise.
-std::pair<int, int> parse_resolution(const std::string& text) {
-  const auto x = text.find('x');
-  const auto digits = [](const std::string& s) {
-    return !s.empty() && s.size() <= 5 && s.find_first_not_of("0123456789") == std::string::npos;
-  };
-  if (x == std::string::npos || !digits(text.substr(0, x)) || !digits(text.substr(x + 1)))
-    throw Error("--resolution: expected WIDTHxHEIGHT such as 640x480, got '" + text + "'");
-  const int w = std::stoi(text.substr(0, x)), h = std::stoi(text.substr(x + 1));
-  if (w < 16 || h < 16 || w > 8192 || h > 8192)
-    throw Error("--resolution: expected a width and height in [16, 8192], got '" + text + "'");
-  return {w, h};
-}
-
 void run(const SynthCliOptions& o) {
   require_file(o.scene, "a scene YAML file (see configs/scenes/)");
   synth::SceneSpec spec = synth::load_scene(o.scene);
@@ -51,7 +37,7 @@ void run(const SynthCliOptions& o) {
   if (o.seed) spec.seed = static_cast<std::uint64_t>(*o.seed);
   if (o.noise) spec.noise_sigma = *o.noise;
   if (!o.resolution.empty()) {
-    const auto [w, h] = parse_resolution(o.resolution);
+    const auto [w, h] = parse_image_size(o.resolution, "--resolution");
     spec.camera = spec.camera.resized(w, h);
   }
   if (o.frames || o.fps) synth::check_trajectory_covers_frames(spec, "--frames/--fps");

@@ -1,5 +1,5 @@
 // facadeslam: one command, several subcommands (replay, synth, train,
-// evaluate, calibrate, render). Errors end the program with one line on
+// evaluate, calibrate, render-map). Errors end the program with one line on
 // stderr and a non-zero exit code; never a stack trace.
 #include <cstdio>
 #include <exception>
@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   apps::add_calibrate_command(app);
   apps::add_synth_command(app);
   apps::add_train_command(app);
+  apps::add_render_map_command(app);
 
   try {
     app.parse(argc, argv);

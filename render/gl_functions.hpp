@@ -23,7 +23,7 @@ namespace facadeslam::render {
 // X-macro of the entry points, without the "gl" prefix.
 #define FACADESLAM_GL_FUNCTIONS(X)                                                            \
   X(GetString) X(GetStringi) X(GetIntegerv) X(GetFloatv) X(GetError) X(Finish)                \
-  X(Viewport) X(Enable) X(Disable) X(DepthFunc) X(DepthMask) X(ClipControl)                   \
+  X(Viewport) X(Enable) X(Disable) X(DepthFunc) X(DepthMask) X(ClipControl) X(LineWidth)      \
   X(ClearBufferfv) X(ClearBufferuiv) X(PixelStorei) X(ReadBuffer) X(ReadPixels) X(DrawBuffers)\
   X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexParameteri)              \
   X(TexParameterf) X(GenerateMipmap) X(ActiveTexture)                                         \
