@@ -14,17 +14,23 @@ namespace {
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-std::string load_error(const std::string& yaml) {
+// The error that loading `yaml` from a file named `name` gives.
+template <class Load>
+std::string error_loading(const std::string& yaml, const std::string& name, Load load) {
   test::TempDir dir;
-  const auto path = dir / "slam.yaml";
+  const auto path = dir / name;
   test::write_text(path, yaml);
   try {
-    load_slam_options(path);
+    load(path);
   } catch (const Error& e) {
     return e.what();
   }
   ADD_FAILURE() << "no error for:\n" << yaml;
   return {};
+}
+
+std::string load_error(const std::string& yaml) {
+  return error_loading(yaml, "slam.yaml", [](const std::filesystem::path& p) { load_slam_options(p); });
 }
 
 TEST(SlamOptions, ShippedConfigHoldsTheDefaults) {
@@ -105,16 +111,7 @@ TEST(SlamOptions, RejectsBadValues) {
 }
 
 std::string semantics_error(const std::string& yaml) {
-  test::TempDir dir;
-  const auto path = dir / "semantics.yaml";
-  test::write_text(path, yaml);
-  try {
-    load_semantics_options(path);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no error for:\n" << yaml;
-  return {};
+  return error_loading(yaml, "semantics.yaml", [](const std::filesystem::path& p) { load_semantics_options(p); });
 }
 
 // configs/semantics.yaml holds exactly the built-in defaults, which the
