@@ -127,9 +127,14 @@ int run_replay(ReplayOptions o) {
   std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu keyframes, %zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map().keyframe_count(),
               outputs.cloud_points, o.out.string().c_str());
-  if (const Json* ate = outputs.report.find("ate_rmse_m"))
-    std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path\n", ate->as_double(),
+  if (const Json* ate = outputs.report.find("ate_rmse_m")) {
+    std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path", ate->as_double(),
                 outputs.report.find("ate_percent_of_path")->as_double());
+    const Json* online = outputs.report.find("ate_online");
+    const Json* online_percent = online ? online->find("ate_percent_of_path") : nullptr;
+    if (online_percent) std::printf(" (as tracked: %.3f %%)", online_percent->as_double());
+    std::printf("\n");
+  }
   if (info.label_accuracy && info.label_accuracy->accuracy())
     std::printf("replay: label accuracy %.3f over %zu labelled points\n", *info.label_accuracy->accuracy(),
                 info.label_accuracy->evaluated);

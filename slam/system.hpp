@@ -17,8 +17,10 @@
 #include "core/map/keyframe_candidate.hpp"
 #include "core/map/keyframe_points.hpp"
 #include "core/map/map.hpp"
+#include "core/trajectory/trajectory.hpp"
 #include "mapmaker/map_maker.hpp"
 #include "slam/initialiser.hpp"
+#include "slam/relative_trajectory.hpp"
 #include "slam/slam_options.hpp"
 #include "semantics/worker/semantic_worker.hpp"
 #include "tracker/tracker.hpp"
@@ -54,6 +56,13 @@ class System {
   // a final global bundle adjustment in synchronous mode.
   void finish();
 
+  // Every frame with a pose, camera-to-world, in processing order. Online:
+  // the poses as tracked. Final: each frame's pose relative to its reference
+  // keyframe recomposed with that keyframe's pose in the map now, which after
+  // finish() is the map after its last bundle adjustment (relative_trajectory.hpp).
+  Trajectory online_trajectory() const { return trajectory_.online(); }
+  Trajectory final_trajectory() const;
+
   bool initialised() const { return initialised_; }
   const Map& map() const { return map_; }
   const Camera& camera() const { return camera_; }
@@ -63,6 +72,9 @@ class System {
 
  private:
   void start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity);
+  // Records a frame with a pose against its reference keyframe, the
+  // keyframe nearest the camera (relative_trajectory.hpp).
+  void record_pose(const FrameReport& report);
   // One debug line per tracked frame: search outcomes, quality, stage times.
   void log_tracking(const FrameReport& report) const;
 
@@ -76,6 +88,7 @@ class System {
   Tracker tracker_;
   Initialiser initialiser_;
   bool initialised_ = false;
+  RelativeTrajectory trajectory_;
 };
 
 }  // namespace facadeslam

@@ -20,7 +20,6 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
   ++frames;
   if (r.has_pose) {
     ++tracked;
-    trajectory.push_back({r.timestamp, r.T_c_w.inverse().isometry()});
   } else if (initialised) {
     ++lost;
   }

@@ -1,10 +1,9 @@
 #pragma once
-// What a replay records frame by frame: counts, the trajectory of the frames
-// with a pose, and the tracker's stage timings.
+// What a replay records frame by frame: counts and the tracker's stage
+// timings (the trajectories are the System's: System::final_trajectory).
 #include <cstddef>
 #include <vector>
 
-#include "core/trajectory/trajectory.hpp"
 #include "core/util/json.hpp"
 #include "slam/system.hpp"
 
@@ -14,7 +13,6 @@ struct ReplayLog {
   std::size_t frames = 0, tracked = 0, lost = 0, relocalisations = 0;
   // Of unreliable classes, summed over the frames: not searched / down-weighted.
   std::size_t points_dropped = 0, points_down_weighted = 0;
-  Trajectory trajectory;  // camera-to-world of every frame with a pose
   std::vector<double> pyramid_ms, coarse_ms, fine_ms, pose_ms, total_ms;
 
   // `initialised`: whether the system had a map at this frame (a frame

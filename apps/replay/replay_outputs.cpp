@@ -70,6 +70,27 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
   return out;
 }
 
+// The ATE figures of `estimate` into `out` (ate_rmse_m, path_length_m,
+// ate_percent_of_path, ate_pairs, sim3_scale), the top view into `plot`
+// unless it is empty. A few poses on a line (a short stretch of straight
+// driving) leave the alignment undetermined: `ate_error` then, and the
+// run's outputs still stand.
+void add_ate_figures(Json& out, const Trajectory& gt, const Trajectory& estimate, const std::string& file,
+                     const std::filesystem::path& plot) {
+  try {
+    const TrajectoryEvaluation e = evaluate_trajectory(gt, estimate, {});
+    out["ate_rmse_m"] = e.ate_rmse_m;
+    out["path_length_m"] = e.path_length_m;
+    out["ate_percent_of_path"] = e.ate_percent_of_path;
+    out["ate_pairs"] = e.pairs;
+    out["sim3_scale"] = e.scale;
+    if (!plot.empty()) save_top_view_png(plot, gt, e);
+  } catch (const Error& e) {
+    spdlog::warn("no ATE for {}: {}", file, e.what());
+    out["ate_error"] = std::string(e.what());
+  }
+}
+
 Json mapping_summary(const MapMakerStats& stats) {
   Json mapping = Json::object();
   mapping["points_created"] = stats.points_created;
@@ -85,7 +106,13 @@ Json mapping_summary(const MapMakerStats& stats) {
 ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
                           const System& system, const ReadStats& read_stats) {
   std::filesystem::create_directories(paths.out);
-  write_tum_trajectory(paths.out / "trajectory.txt", log.trajectory);
+  // trajectory.txt from the final map (each frame recomposed on its
+  // reference keyframe after the last bundle adjustment); the poses as
+  // tracked, with the jumps a later map correction leaves, beside it.
+  const Trajectory trajectory = system.final_trajectory();
+  const Trajectory online = system.online_trajectory();
+  write_tum_trajectory(paths.out / "trajectory.txt", trajectory);
+  write_tum_trajectory(paths.out / "trajectory_online.txt", online);
   write_tum_trajectory(paths.out / "keyframes.txt", keyframe_trajectory(system.map()));
   const std::size_t cloud_points = write_labelled_point_cloud(paths.out / "map.ply", system.map());
   save_map(paths.map_file, system.map(), system.camera());
@@ -109,22 +136,14 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["timings"] = timings;
   report["mapping"] = mapping_summary(stats);
   report["semantics"] = semantics_summary(info, log, system);
-  if (!paths.gt.empty() && log.trajectory.size() >= 3) {
+  if (!paths.gt.empty() && trajectory.size() >= 3) {
+    // trajectory.txt's figures at the top level (the names report.json has
+    // always had), the online trajectory's under the same names in ate_online.
     const Trajectory gt = read_trajectory(paths.gt);
-    try {
-      const TrajectoryEvaluation e = evaluate_trajectory(gt, log.trajectory, {});
-      report["ate_rmse_m"] = e.ate_rmse_m;
-      report["path_length_m"] = e.path_length_m;
-      report["ate_percent_of_path"] = e.ate_percent_of_path;
-      report["ate_pairs"] = e.pairs;
-      report["sim3_scale"] = e.scale;
-      save_top_view_png(paths.out / "trajectory.png", gt, e);
-    } catch (const Error& e) {
-      // A few poses on a line (a short stretch of straight driving) leave
-      // the alignment undetermined: the run's outputs still stand.
-      spdlog::warn("no ATE: {}", e.what());
-      report["ate_error"] = std::string(e.what());
-    }
+    add_ate_figures(report, gt, trajectory, "trajectory.txt", paths.out / "trajectory.png");
+    Json ate_online = Json::object();
+    add_ate_figures(ate_online, gt, online, "trajectory_online.txt", {});
+    report["ate_online"] = ate_online;
   }
   write_json(paths.out / "report.json", report);
   return {report, cloud_points};

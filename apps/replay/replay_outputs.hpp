@@ -1,8 +1,10 @@
 #pragma once
 // Everything a replay leaves in its output folder: trajectory.txt (every
-// frame with a pose, TUM), keyframes.txt (TUM), map.ply (labelled point
-// cloud), the map file, report.json and, with ground truth, trajectory.png
-// (top view against it). Each file is written atomically.
+// frame with a pose, TUM, recomposed from the final map),
+// trajectory_online.txt (the same frames' poses as tracked), keyframes.txt
+// (TUM), map.ply (labelled point cloud), the map file, report.json and, with
+// ground truth, trajectory.png (top view of trajectory.txt against it). Each
+// file is written atomically.
 #include <filesystem>
 #include <optional>
 

@@ -147,15 +147,26 @@ TEST_F(ReplayCli, WritesEveryOutputAndWithGroundTruthTheAteAndItsPlot) {
     if (with_gt) args.append(" --gt ").append(quoted(sequence / "groundtruth.txt"));
     const test::CliResult r = run(args);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    for (const char* file : {"trajectory.txt", "keyframes.txt", "map.ply", "map.fslmap", "report.json"})
+    for (const char* file :
+         {"trajectory.txt", "trajectory_online.txt", "keyframes.txt", "map.ply", "map.fslmap", "report.json"})
       EXPECT_TRUE(fs::exists(out / file)) << file;
+    // The final trajectory and the online one: the same frames, one line each.
+    const auto lines = [](const std::string& text) { return std::count(text.begin(), text.end(), '\n'); };
+    const std::string final = test::read_file_text(out / "trajectory.txt");
+    const std::string online = test::read_file_text(out / "trajectory_online.txt");
+    EXPECT_GE(lines(final), 20);
+    EXPECT_EQ(lines(final), lines(online));
     const std::string report = test::read_file_text(out / "report.json");
     EXPECT_EQ(report.find("ate_percent_of_path") != std::string::npos, with_gt) << report;
+    EXPECT_EQ(report.find("\"ate_online\"") != std::string::npos, with_gt) << report;
     EXPECT_EQ(fs::exists(out / "trajectory.png"), with_gt);
     if (with_gt) {
       const cv::Mat plot = cv::imread((out / "trajectory.png").string());
       EXPECT_FALSE(plot.empty());
       EXPECT_LT(test::json_number(report, "ate_percent_of_path"), 10.0);
+      // ate_online comes after the top-level figures: the second occurrence.
+      const std::string after_online = report.substr(report.find("\"ate_online\""));
+      EXPECT_LT(test::json_number(after_online, "ate_percent_of_path"), 10.0);
     }
   }
 }

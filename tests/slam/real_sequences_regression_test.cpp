@@ -182,6 +182,9 @@ TEST(RealSequenceRegression, KittiSnippetInitialisesEarlyAndTracksWithinTwoPerce
               "(%.1f %%), %zu keyframes, ATE (Sim3) %.4f m = %.3f %% of the %.2f m path\n",
               log.frames.size(), log.initialised_at(), tracked, after, 100.0 * share, system.map().keyframe_count(),
               ate.ate_rmse_m, ate.ate_percent_of_path, ate.path_length_m);
+  const TrajectoryEvaluation final_ate =
+      evaluate_trajectory(read_trajectory(dir / "groundtruth.txt"), system.final_trajectory(), {});
+  test::report_final_figures("kitti06-snippet", final_ate, ate);
   EXPECT_GE(share, 0.95);
   EXPECT_LE(ate.ate_percent_of_path, 2.0);
 }

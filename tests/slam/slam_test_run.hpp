@@ -81,6 +81,12 @@ TrajectoryEvaluation evaluate(const SceneFrames& scene, const Trajectory& estima
 // ATE, path, tracker ms median and p95.
 void report_figures(const std::string& name, const SlamRunLog& log, const TrajectoryEvaluation& ate);
 
+// One line of the final trajectory's figures (System::final_trajectory,
+// what trajectory.txt holds) beside the online ones, and as test properties
+// (final_ate_rmse_m, final_ate_percent_of_path).
+void report_final_figures(const std::string& name, const TrajectoryEvaluation& final_ate,
+                          const TrajectoryEvaluation& online_ate);
+
 // The synchronous System the regression runs use (fixed seed: the default).
 SlamOptions synchronous_options();
 

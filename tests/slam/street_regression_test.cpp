@@ -35,6 +35,10 @@ void expect_tracks_whole_street(const std::string& name, double max_percent) {
   ASSERT_GE(log.estimate.size(), 3u);
   const TrajectoryEvaluation ate = test::evaluate(scene, log.estimate);
   test::report_figures(name, log, ate);
+  const Trajectory final = system.final_trajectory();
+  ASSERT_EQ(final.size(), log.estimate.size());
+  const TrajectoryEvaluation final_ate = test::evaluate(scene, final);
+  test::report_final_figures(name, final_ate, ate);
   EXPECT_TRUE(log.lost_frames().empty()) << log.lost_frames().size() << " frames lost: " << list(log.lost_frames());
   EXPECT_LE(ate.ate_percent_of_path, max_percent);
   // Tracking must cover the sequence, not just a lucky part of it.

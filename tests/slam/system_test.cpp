@@ -36,6 +36,17 @@ TEST(System, InitialisesOnAShortPanAndTracksTheFramesAfter) {
   ASSERT_GE(log.estimate.size(), 3u);
   const TrajectoryEvaluation ate = test::evaluate(scene, log.estimate);
   EXPECT_LT(ate.ate_rmse_m, 0.01) << "path " << ate.path_length_m << " m";
+
+  // The final trajectory has the same frames, recomposed from the final map.
+  const Trajectory online = system.online_trajectory(), final = system.final_trajectory();
+  ASSERT_EQ(online.size(), log.estimate.size());
+  ASSERT_EQ(final.size(), log.estimate.size());
+  for (std::size_t i = 0; i < final.size(); ++i) {
+    EXPECT_EQ(online[i].timestamp, log.estimate[i].timestamp);
+    EXPECT_TRUE(online[i].T_w_c.isApprox(log.estimate[i].T_w_c, 1e-12)) << i;
+    EXPECT_EQ(final[i].timestamp, log.estimate[i].timestamp);
+  }
+  EXPECT_LT(test::evaluate(scene, final).ate_rmse_m, 0.01);
 }
 
 TEST(System, SameInputGivesTheSameResultBitForBit) {
@@ -82,6 +93,9 @@ TEST(System, ThreadedMapMakerKeepsUpWithTheTracker) {
   // The demo's first 3 s are a short sideways pan (~2.9 m): a threaded run's
   // ATE varies with timing around 3-5 % of it; a broken map gives tens of %.
   EXPECT_LT(ate.ate_percent_of_path, 10.0) << "ATE " << ate.ate_rmse_m << " m";
+  const Trajectory final = system.final_trajectory();
+  ASSERT_EQ(final.size(), log.estimate.size());
+  EXPECT_LT(test::evaluate(scene, final).ate_percent_of_path, 10.0);
 }
 
 // With the shipped model the semantic worker labels the map's points:
