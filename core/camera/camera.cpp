@@ -59,6 +59,15 @@ double Camera::fy() const { return visit([](const auto& m) { return m.fy; }); }
 double Camera::cx() const { return visit([](const auto& m) { return m.cx; }); }
 double Camera::cy() const { return visit([](const auto& m) { return m.cy; }); }
 
+Eigen::Matrix3d Camera::pinhole_matrix() const {
+  Eigen::Matrix3d K = Eigen::Matrix3d::Identity();
+  K(0, 0) = fx();
+  K(1, 1) = fy();
+  K(0, 2) = cx();
+  K(1, 2) = cy();
+  return K;
+}
+
 Eigen::Vector2d Camera::project(const Eigen::Vector3d& p_c) const {
   return visit([&](const auto& m) -> Eigen::Vector2d { return m.project(p_c); });
 }

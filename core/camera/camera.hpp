@@ -43,6 +43,8 @@ class Camera {
   double fy() const;
   double cx() const;
   double cy() const;
+  // The same as a matrix: ideal pixel ~ K * ray (z = 1), distortion apart.
+  Eigen::Matrix3d pinhole_matrix() const;
 
   Eigen::Vector2d project(const Eigen::Vector3d& p_c) const;
   Eigen::Vector3d unproject(const Eigen::Vector2d& px) const;

@@ -46,16 +46,6 @@ Eigen::Matrix3d to_eigen3(const cv::Mat& m) {
   return e;
 }
 
-// The pinhole matrix of the camera: ideal pixels = K * (unprojected ray).
-Eigen::Matrix3d pinhole_matrix(const Camera& camera) {
-  Eigen::Matrix3d K = Eigen::Matrix3d::Identity();
-  K(0, 0) = camera.fx();
-  K(1, 1) = camera.fy();
-  K(0, 2) = camera.cx();
-  K(1, 2) = camera.cy();
-  return K;
-}
-
 // |t|/d of a homography in normalised coordinates, H = R + t n^T / d: up to
 // scale its singular values are 1 +- about |t|/d, so their spread measures the
 // translation against the plane distance (0 for a pure rotation).
@@ -143,7 +133,7 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
   TwoViewMatches matches{pixels0, pixels1, {}, {}};
   matches.rays0.reserve(n);
   matches.rays1.reserve(n);
-  const Eigen::Matrix3d K = pinhole_matrix(camera);
+  const Eigen::Matrix3d K = camera.pinhole_matrix();
   const Eigen::Matrix3d K_inv = K.inverse();
   std::vector<Eigen::Vector2d> ideal0(n), ideal1(n);
   std::vector<cv::Point2d> cv0(n), cv1(n);

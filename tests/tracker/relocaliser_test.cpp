@@ -25,7 +25,7 @@ cv::Mat random_scene(int seed) {
 
 // The image a camera rotated by R_cur_kf about its centre sees: x_cur = K R K^-1 x_kf.
 cv::Mat rotate_view(const cv::Mat& image, const SO3d& R_cur_kf, const Camera& camera) {
-  const Eigen::Matrix3d K = (Eigen::Matrix3d() << camera.fx(), 0, camera.cx(), 0, camera.fy(), camera.cy(), 0, 0, 1).finished();
+  const Eigen::Matrix3d K = camera.pinhole_matrix();
   const Eigen::Matrix3d H = K * R_cur_kf.matrix() * K.inverse();
   cv::Mat Hcv(3, 3, CV_64F);
   for (int r = 0; r < 3; ++r)

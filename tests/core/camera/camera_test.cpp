@@ -39,6 +39,17 @@ TEST(Camera, DispatchesToItsModel) {
   EXPECT_TRUE(std::holds_alternative<AtanCamera>(b.model()));
 }
 
+// K maps a ray on z = 1 to the pixel an undistorted camera would give.
+TEST(Camera, PinholeMatrixIsTheLinearPart) {
+  const Camera camera(640, 480, PinholeRadTan{.fx = 500.0, .fy = 480.0, .cx = 319.5, .cy = 239.5});
+  const Eigen::Vector3d ray(0.2, -0.1, 1.0);
+  EXPECT_TRUE((camera.pinhole_matrix() * ray).hnormalized().isApprox(camera.project(ray)));
+  const Eigen::Matrix3d K = ptam_example().pinhole_matrix();
+  EXPECT_EQ(K(0, 0), 450.0);
+  EXPECT_EQ(K(1, 2), 239.5);
+  EXPECT_EQ(K.row(2), Eigen::RowVector3d(0, 0, 1));
+}
+
 TEST(Camera, VisitGivesTheConcreteModelForAutoDiff) {
   // As bundle adjustment does: one templated functor per concrete model.
   for (const Camera& camera : {opencv_left(), ptam_example()}) {

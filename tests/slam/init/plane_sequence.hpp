@@ -77,21 +77,11 @@ inline TexturedPlane facade_plane(cv::Mat texture, double yaw_deg, double metres
   return plane;
 }
 
-// Ideal pinhole matrix of an undistorted camera.
-inline Eigen::Matrix3d pinhole_K(const Camera& camera) {
-  Eigen::Matrix3d K = Eigen::Matrix3d::Identity();
-  K(0, 0) = camera.fx();
-  K(1, 1) = camera.fy();
-  K(0, 2) = camera.cx();
-  K(1, 2) = camera.cy();
-  return K;
-}
-
 // Texture pixel -> pixel of the camera at T_c_c0: x ~ K (R A + t e3^T) (u, v, 1).
 inline Eigen::Matrix3d texture_to_image(const Camera& camera, const TexturedPlane& plane, const SE3d& T_c_c0) {
   Eigen::Matrix3d M = T_c_c0.rotation_matrix() * plane.texture_to_c0();
   M.col(2) += T_c_c0.translation();
-  return pinhole_K(camera) * M;
+  return camera.pinhole_matrix() * M;
 }
 
 // The frame seen by an undistorted camera at T_c_c0. warpPerspective samples

@@ -16,6 +16,7 @@
 
 #include "core/camera/camera.hpp"
 #include "core/lie/se3.hpp"
+#include "tests/core/camera/camera_test_util.hpp"
 
 namespace facadeslam::test {
 
@@ -28,23 +29,10 @@ inline Camera plain_camera() {
 
 // OpenCV's sample left camera (configs/camera/opencv-left.yaml): strong
 // barrel distortion at the corners.
-inline Camera opencv_left_camera() {
-  return Camera(640, 480,
-                PinholeRadTan{.fx = 535.91573396163199,
-                              .fy = 535.91573396163199,
-                              .cx = 342.28315473308373,
-                              .cy = 235.57082909788173,
-                              .k1 = -0.26637260909660682,
-                              .k2 = -0.038588898922304653,
-                              .p1 = 0.0017831947042852964,
-                              .p2 = -0.00028122100441115472,
-                              .k3 = 0.23839153080878486});
-}
+inline Camera opencv_left_camera() { return Camera(640, 480, opencv_left_model()); }
 
 // PTAM's wide-angle ATAN camera (configs/camera/ptam-atan-example.yaml).
-inline Camera atan_camera() {
-  return Camera(640, 480, AtanCamera{.fx = 450.0, .fy = 450.0, .cx = 319.5, .cy = 239.5, .w = 0.93});
-}
+inline Camera atan_camera() { return Camera(640, 480, ptam_example_model()); }
 
 inline Camera camera_by_name(const std::string& name) {
   if (name == "opencv_left") return opencv_left_camera();
