@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -25,24 +26,28 @@ double line_distance2(const Eigen::Vector3d& l, const Eigen::Vector2d& point) {
   return d * d / norm2;
 }
 
-}  // namespace
-
-ModelScore score_homography(const Eigen::Matrix3d& H, const std::vector<Eigen::Vector2d>& ideal0,
-                            const std::vector<Eigen::Vector2d>& ideal1, double sigma_px) {
+// A model with no inlier, for models that cannot be scored.
+ModelScore no_inliers(std::size_t n) {
   ModelScore result;
-  result.inliers.assign(ideal0.size(), false);
-  Eigen::FullPivLU<Eigen::Matrix3d> lu(H);
-  if (!H.allFinite() || !lu.isInvertible()) return result;
-  const Eigen::Matrix3d H_inv = lu.inverse();
-  const double inv_sigma2 = 1.0 / (sigma_px * sigma_px);
-  for (std::size_t i = 0; i < ideal0.size(); ++i) {
+  result.inliers.assign(n, false);
+  return result;
+}
+
+// Scores correspondence i by its two chi-square errors, one per direction
+// (`chi2(i)` gives the pair): an inlier when both are within `cut`; each one
+// within it adds kChiSquare95TwoDof - chi2, the same offset for both models
+// so that their scores compare (ORB-SLAM's scoring).
+template <class ChiSquarePair>
+ModelScore score_both_ways(std::size_t n, double cut, ChiSquarePair chi2) {
+  ModelScore result = no_inliers(n);
+  for (std::size_t i = 0; i < n; ++i) {
     bool inlier = true;
-    for (const double chi2 : {transfer_error2(H, ideal0[i], ideal1[i]) * inv_sigma2,
-                              transfer_error2(H_inv, ideal1[i], ideal0[i]) * inv_sigma2}) {
-      if (chi2 > kChiSquare95TwoDof)
+    const auto [forward, backward] = chi2(i);
+    for (const double e : {forward, backward}) {
+      if (e > cut)
         inlier = false;
       else
-        result.score += kChiSquare95TwoDof - chi2;
+        result.score += kChiSquare95TwoDof - e;
     }
     result.inliers[i] = inlier;
     result.inlier_count += inlier ? 1 : 0;
@@ -50,26 +55,29 @@ ModelScore score_homography(const Eigen::Matrix3d& H, const std::vector<Eigen::V
   return result;
 }
 
+}  // namespace
+
+ModelScore score_homography(const Eigen::Matrix3d& H, const std::vector<Eigen::Vector2d>& ideal0,
+                            const std::vector<Eigen::Vector2d>& ideal1, double sigma_px) {
+  Eigen::FullPivLU<Eigen::Matrix3d> lu(H);
+  if (!H.allFinite() || !lu.isInvertible()) return no_inliers(ideal0.size());
+  const Eigen::Matrix3d H_inv = lu.inverse();
+  const double inv_sigma2 = 1.0 / (sigma_px * sigma_px);
+  return score_both_ways(ideal0.size(), kChiSquare95TwoDof, [&](std::size_t i) {
+    return std::pair{transfer_error2(H, ideal0[i], ideal1[i]) * inv_sigma2,
+                     transfer_error2(H_inv, ideal1[i], ideal0[i]) * inv_sigma2};
+  });
+}
+
 ModelScore score_fundamental(const Eigen::Matrix3d& F, const std::vector<Eigen::Vector2d>& ideal0,
                              const std::vector<Eigen::Vector2d>& ideal1, double sigma_px) {
-  ModelScore result;
-  result.inliers.assign(ideal0.size(), false);
-  if (!F.allFinite()) return result;
+  if (!F.allFinite()) return no_inliers(ideal0.size());
   const double inv_sigma2 = 1.0 / (sigma_px * sigma_px);
-  for (std::size_t i = 0; i < ideal0.size(); ++i) {
-    bool inlier = true;
-    // Distance of x1 to the epipolar line of x0 in view 1, and vice versa.
-    for (const double chi2 : {line_distance2(F * ideal0[i].homogeneous(), ideal1[i]) * inv_sigma2,
-                              line_distance2(F.transpose() * ideal1[i].homogeneous(), ideal0[i]) * inv_sigma2}) {
-      if (chi2 > kChiSquare95OneDof)
-        inlier = false;
-      else
-        result.score += kChiSquare95TwoDof - chi2;
-    }
-    result.inliers[i] = inlier;
-    result.inlier_count += inlier ? 1 : 0;
-  }
-  return result;
+  // Distance of x1 to the epipolar line of x0 in view 1, and vice versa.
+  return score_both_ways(ideal0.size(), kChiSquare95OneDof, [&](std::size_t i) {
+    return std::pair{line_distance2(F * ideal0[i].homogeneous(), ideal1[i]) * inv_sigma2,
+                     line_distance2(F.transpose() * ideal1[i].homogeneous(), ideal0[i]) * inv_sigma2};
+  });
 }
 
 }  // namespace facadeslam
