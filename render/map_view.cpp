@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/util/error.hpp"
+#include "render/camera_projection_gl.hpp"
 #include "render/gl_program.hpp"
 #include "render/map_view_legend.hpp"
 #include "render/osmesa_context.hpp"
@@ -19,16 +20,13 @@ namespace {
 // Points and lines share one program: vertices arrive in the camera frame
 // (transformed on the CPU in double precision) and are projected exactly as
 // the mesh renderer does (render/projection.hpp: reversed z, no y flip).
-const char* const kVertexShader = R"(#version 450 core
+const char* const kVertexShaderBody = R"(
 layout(location = 0) in vec3 p_c;
 layout(location = 1) in vec4 colour;
-uniform vec4 projection;  // 2fx/W, 2(cx+0.5)/W - 1, 2fy/H, 2(cy+0.5)/H - 1
-uniform float near_plane;
 uniform float point_size;
 out vec4 v_colour;
 void main() {
-  gl_Position = vec4(projection.x * p_c.x + projection.y * p_c.z,
-                     projection.z * p_c.y + projection.w * p_c.z, near_plane, p_c.z);
+  gl_Position = clip_from_camera(p_c);
   gl_PointSize = point_size;
   v_colour = colour;
 }
@@ -95,7 +93,8 @@ struct MapView::Impl {
 
   Impl()
       : gl(context.gl()),
-        program(gl, "map view", map_view_detail::kVertexShader, map_view_detail::kFragmentShader) {
+        program(gl, "map view", vertex_shader_with_camera_projection(map_view_detail::kVertexShaderBody).c_str(),
+                map_view_detail::kFragmentShader) {
     using map_view_detail::GpuVertex;
     gl.GenVertexArrays(1, &vao);
     gl.GenBuffers(1, &vbo);
@@ -205,11 +204,7 @@ cv::Mat MapView::render(const MapViewContent& content, const MapViewCamera& came
   gl.DepthFunc(GL_GREATER);
 
   gl.UseProgram(m.program.id());
-  const double w = k.width, h = k.height;
-  gl.Uniform4f(m.program.uniform("projection"), static_cast<float>(2.0 * k.fx / w),
-               static_cast<float>(2.0 * (k.cx + 0.5) / w - 1.0), static_cast<float>(2.0 * k.fy / h),
-               static_cast<float>(2.0 * (k.cy + 0.5) / h - 1.0));
-  gl.Uniform1f(m.program.uniform("near_plane"), static_cast<float>(camera.near));
+  set_camera_projection(gl, m.program, k, camera.near);
   gl.Uniform1f(m.program.uniform("point_size"), std::max(1.f, style.point_size));
   gl.Uniform1f(m.program.uniform("outline"), std::max(0.f, style.outline_pixels));
   gl.BindVertexArray(m.vao);

@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "core/util/error.hpp"
+#include "render/camera_projection_gl.hpp"
 #include "render/distortion_resampler.hpp"
 #include "render/gl_program.hpp"
 #include "render/osmesa_context.hpp"
@@ -13,16 +14,13 @@ namespace {
 
 // Meshes: vertices arrive in the camera frame (transformed on the CPU in
 // double precision, so float only ever holds camera-relative coordinates).
-const char* const kMeshVertexShader = R"(#version 450 core
+const char* const kMeshVertexShaderBody = R"(
 layout(location = 0) in vec3 p_c;
 layout(location = 1) in vec2 uv;
-uniform vec4 projection;  // 2fx/W, 2(cx+0.5)/W - 1, 2fy/H, 2(cy+0.5)/H - 1 (render/projection.hpp)
-uniform float near_plane;
 out vec2 v_uv;
 out float v_z;
 void main() {
-  gl_Position = vec4(projection.x * p_c.x + projection.y * p_c.z,
-                     projection.z * p_c.y + projection.w * p_c.z, near_plane, p_c.z);
+  gl_Position = clip_from_camera(p_c);
   v_uv = uv;
   v_z = p_c.z;
 }
@@ -134,7 +132,7 @@ struct Renderer::Impl {
   explicit Impl(RendererSettings s)
       : settings(s),
         gl(context.gl()),
-        mesh_program(gl, "mesh", kMeshVertexShader, kMeshFragmentShader),
+        mesh_program(gl, "mesh", vertex_shader_with_camera_projection(kMeshVertexShaderBody).c_str(), kMeshFragmentShader),
         sky_program(gl, "sky", kSkyVertexShader, kSkyFragmentShader) {
     gl.GenVertexArrays(1, &vao);
     gl.GenVertexArrays(1, &sky_vao);
@@ -310,11 +308,7 @@ struct Renderer::Impl {
       gl.Enable(GL_DEPTH_TEST);
       gl.DepthFunc(GL_GREATER);
       gl.UseProgram(mesh_program.id());
-      const double w = k.width, h = k.height;
-      gl.Uniform4f(mesh_program.uniform("projection"), static_cast<float>(2.0 * k.fx / w),
-                   static_cast<float>(2.0 * (k.cx + 0.5) / w - 1.0), static_cast<float>(2.0 * k.fy / h),
-                   static_cast<float>(2.0 * (k.cy + 0.5) / h - 1.0));
-      gl.Uniform1f(mesh_program.uniform("near_plane"), static_cast<float>(settings.near));
+      set_camera_projection(gl, mesh_program, k, settings.near);
       gl.BindVertexArray(vao);
       gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
       gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(GpuVertex)),
