@@ -31,7 +31,8 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
   return std::make_unique<semantics::SemanticWorker>(std::move(model), queue, options.class_weights());
 }
 
-// With labels coming, the tracker leaves out points of unreliable classes.
+// With labels coming, the tracker weighs points of unreliable classes down
+// (or leaves them out: SemanticsOptions::unreliable_weight).
 SlamOptions with_label_aware_tracking(SlamOptions options) {
   if (options.semantics.enabled) {
     options.tracker.unreliable_classes = options.semantics.unreliable_classes;
