@@ -279,7 +279,16 @@ void MapMaker::run() {
       add_keyframe(std::move(*candidate));
       continue;
     }
-    if (queue_.closed()) break;
+    if (queue_.closed()) {
+      // The run is over: one last global bundle adjustment, as --sync runs
+      // one, so the final map (and the trajectory recomposed from it) does
+      // not depend on whether the thread happened to be idle at the end.
+      if (map_changed_since_global_ba_) {
+        run_global_ba();
+        remove_outlier_points();
+      }
+      break;
+    }
     if (map_changed_since_global_ba_) {
       run_global_ba();
       remove_outlier_points();

@@ -37,7 +37,7 @@ std::optional<StartPose> Initialiser::add_frame(const Frame& frame) {
   // The reference is the first keyframe, at the origin: T_c_w is the motion
   // over the frames tracked since it.
   const int frames = std::max(1, two_view_.frames_since_reset());
-  return StartPose{*T_c_w, T_c_w->log() / frames};
+  return StartPose{*T_c_w, T_c_w->log() / frames, reference_->index, reference_->timestamp};
 }
 
 }  // namespace facadeslam

@@ -28,6 +28,10 @@ struct StartPose {
   // motion model starts from it instead of from rest, which a car at 10 Hz
   // (a metre per frame) needs.
   Eigen::Matrix<double, 6, 1> velocity = Eigen::Matrix<double, 6, 1>::Zero();
+  // The reference frame: the first keyframe, at the world origin. It was
+  // fed before the map existed, so its pose is known only now.
+  std::size_t reference_index = 0;
+  double reference_timestamp = 0.0;
 };
 
 class Initialiser {

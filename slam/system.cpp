@@ -93,6 +93,11 @@ FrameReport System::process(Frame frame) {
     report.status = FrameStatus::initialising;
     if (const auto start = initialiser_.add_frame(frame)) {
       start_tracking(start->T_c_w, frame.index, start->velocity);
+      FrameReport reference;  // the first keyframe's frame: in the trajectories too, as ORB-SLAM writes it
+      reference.index = start->reference_index;
+      reference.timestamp = start->reference_timestamp;
+      record_pose(reference);
+      report.initial_reference = std::pair{reference.index, reference.timestamp};
       report.status = FrameStatus::initialised;
       report.has_pose = true;
       report.T_c_w = start->T_c_w;

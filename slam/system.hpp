@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "core/camera/camera.hpp"
 #include "core/image/frame.hpp"
@@ -37,6 +38,10 @@ struct FrameReport {
   bool has_pose = false;
   SE3d T_c_w;
   TrackingResult tracking;
+  // On the frame that initialised: the reference frame it was initialised
+  // against (index, timestamp), the first keyframe, whose pose (the world
+  // origin) is known only now. The trajectories have it.
+  std::optional<std::pair<std::size_t, double>> initial_reference;
   double pyramid_ms = 0.0;
   double total_ms = 0.0;
 };

@@ -1,5 +1,6 @@
 #include "tracker/relocaliser.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -49,6 +50,22 @@ SO3d rotation_from_sbi_motion(const Se2Motion& motion, const Camera& camera, cv:
     if (step.norm() < 1e-9) break;
   }
   return R;
+}
+
+std::vector<KeyFrameSnapshot> keyframes_by_similarity(const cv::Mat& current_sbi,
+                                                      std::vector<KeyFrameSnapshot> keyframes) {
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t i = 0; i < keyframes.size(); ++i) {
+    const cv::Mat& sbi = keyframes[i].keyframe->small_blurred();
+    order.emplace_back(sbi.size() == current_sbi.size() ? sbi_difference(sbi, current_sbi)
+                                                         : std::numeric_limits<double>::infinity(),
+                       i);
+  }
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<KeyFrameSnapshot> out;
+  out.reserve(keyframes.size());
+  for (const auto& [difference, i] : order) out.push_back(std::move(keyframes[i]));
+  return out;
 }
 
 std::optional<RelocalisationCandidate> find_relocalisation_candidate(

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <unordered_map>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
@@ -38,7 +39,11 @@ struct Tracker::Candidate {
 };
 
 Tracker::Tracker(Camera camera, const Map& map, KeyFrameQueue& keyframes, TrackerOptions options)
-    : camera_(std::move(camera)), map_(map), keyframes_(keyframes), options_(std::move(options)) {}
+    : camera_(std::move(camera)),
+      map_(map),
+      keyframes_(keyframes),
+      options_(std::move(options)),
+      descriptor_relocaliser_(camera_, options_.descriptor_relocaliser) {}
 
 void Tracker::start(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity) {
   started_ = true;
@@ -200,7 +205,9 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
 
   const double ratio =
       result.fine_searched > 0 ? static_cast<double>(result.fine_found) / result.fine_searched : 0.0;
-  if (result.fine_found >= options_.good_found || (result.fine_found >= options_.min_found && ratio >= options_.quality_good))
+  const bool close = result.inlier_rms_px <= options_.max_good_rms_px;
+  if (close && (result.fine_found >= options_.good_found ||
+                (result.fine_found >= options_.min_found && ratio >= options_.quality_good)))
     result.quality = TrackingQuality::good;
   else if (result.fine_found < options_.min_found || ratio < options_.quality_lost)
     result.quality = TrackingQuality::bad;
@@ -209,37 +216,80 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
   return inliers;
 }
 
-TrackingResult Tracker::track(const Frame& frame) {
-  TrackingResult result;
-  if (!started_) return result;
+std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> Tracker::relocalise(const Frame& frame) {
+  const Stopwatch t0;
+  const cv::Mat sbi = make_small_blurry_image(*frame.pyramid);
+  std::vector<KeyFrameSnapshot> keyframes = map_.snapshot_keyframes();
+  // Tries a starting pose: accepted only when the normal search from it
+  // tracks well (not merely "not bad": a wrong pose that happens to find a
+  // few points would send the tracker down a wrong path).
+  auto attempt = [&](const SE3d& T_start) -> std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> {
+    TrackingResult result;
+    auto inliers = track_from(T_start, frame, result);
+    if (result.quality != TrackingQuality::good) return std::nullopt;
+    return std::pair{std::move(result), std::move(inliers)};
+  };
+  auto done = [&](std::pair<TrackingResult, std::vector<TrackedMeasurement>> found, const char* how, KeyFrame::Id id) {
+    spdlog::info("frame {}: relocalised ({}) against keyframe {} after {} lost frames", frame.index, how, id,
+                 lost_frames_);
+    found.first.timings.relocalise_ms = t0.elapsed_ms();
+    return std::optional{std::move(found)};
+  };
+  if (const auto candidate = find_relocalisation_candidate(sbi, keyframes, camera_, options_.relocaliser))
+    if (auto found = attempt(candidate->T_c_w)) return done(std::move(*found), "small blurry image", candidate->keyframe->id());
+  if (!options_.descriptor_relocaliser.enabled || keyframes.empty()) return std::nullopt;
+  // The keyframes most like the frame, and the newest (where tracking was
+  // lost, if it was lost just now) in any case.
+  std::vector<KeyFrameSnapshot> ranked = keyframes_by_similarity(sbi, keyframes);
+  const auto newest = std::max_element(keyframes.begin(), keyframes.end(), [](const auto& a, const auto& b) {
+    return a.keyframe->id() < b.keyframe->id();
+  });
+  const auto tried = static_cast<std::size_t>(std::max(1, options_.descriptor_relocaliser.max_keyframes));
+  if (std::none_of(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(std::min(tried, ranked.size())),
+                   [&](const auto& k) { return k.keyframe == newest->keyframe; }))
+    ranked.insert(ranked.begin() + static_cast<std::ptrdiff_t>(std::min(tried - 1, ranked.size())), *newest);
+  if (const auto candidate = descriptor_relocaliser_.relocalise(*frame.pyramid, map_, ranked)) {
+    spdlog::debug("frame {}: ORB + PnP pose from keyframe {}: {} of {} matches inliers", frame.index,
+                  candidate->keyframe->id(), candidate->inliers, candidate->matches);
+    if (auto found = attempt(candidate->T_c_w)) return done(std::move(*found), "ORB + PnP", candidate->keyframe->id());
+  }
+  return std::nullopt;
+}
 
-  if (lost_frames_ >= options_.lost_frames_before_relocalising) {
-    const Stopwatch t0;
-    const cv::Mat sbi = make_small_blurry_image(*frame.pyramid);
-    const auto candidate =
-        find_relocalisation_candidate(sbi, map_.snapshot_keyframes(), camera_, options_.relocaliser);
-    result.timings.relocalise_ms = t0.elapsed_ms();
-    if (!candidate) {
-      ++lost_frames_;
-      return result;
-    }
-    auto inliers = track_from(candidate->T_c_w, frame, result);
-    if (result.quality == TrackingQuality::bad) {
-      ++lost_frames_;
-      return result;
-    }
-    spdlog::info("frame {}: relocalised against keyframe {} after {} lost frames", frame.index,
-                 candidate->keyframe->id(), lost_frames_);
+TrackingResult Tracker::track(const Frame& frame) {
+  if (!started_) return {};
+
+  // Lost: relocalise, or stay lost.
+  auto relocalised = [&](std::pair<TrackingResult, std::vector<TrackedMeasurement>> found) {
+    TrackingResult& result = found.first;
     lost_frames_ = 0;
     velocity_.setZero();
     T_c_w_ = result.T_c_w;
+    found_at_keyframe_ = result.fine_found;
     result.tracked = true;
     result.relocalised = true;
+    // A relocalised view may be new (a multi-view set): it may make a keyframe like any well-tracked frame.
+    consider_keyframe(frame, result, std::move(found.second));
+    return result;
+  };
+  if (lost_frames_ >= options_.lost_frames_before_relocalising) {
+    const Stopwatch t0;
+    if (auto found = relocalise(frame)) return relocalised(std::move(*found));
+    ++lost_frames_;
+    TrackingResult result;
+    result.timings.relocalise_ms = t0.elapsed_ms();
     return result;
   }
 
+  TrackingResult result;
   const SE3d predicted = SE3d::exp(options_.velocity_decay * velocity_) * T_c_w_;
   auto inliers = track_from(predicted, frame, result);
+  // A first bad frame, or one whose points sit far from where the pose puts
+  // them: perhaps the view jumped, and a relocalised pose that tracks well
+  // is worth its time.
+  const bool doubtful = result.quality == TrackingQuality::bad || result.inlier_rms_px > options_.max_good_rms_px;
+  if (doubtful && lost_frames_ == 0 && options_.relocalise_on_first_bad_frame)
+    if (auto found = relocalise(frame)) return relocalised(std::move(*found));
   if (result.quality == TrackingQuality::bad) {
     // PTAM: the next few frames are still tracked from the motion model (a
     // blurred or briefly occluded frame says little about where the camera
@@ -259,11 +309,15 @@ TrackingResult Tracker::track(const Frame& frame) {
   // them, a frame or more after the request).
   found_at_keyframe_ = std::max(found_at_keyframe_, result.fine_found);
 
+  consider_keyframe(frame, result, std::move(inliers));
+  return result;
+}
+
+void Tracker::consider_keyframe(const Frame& frame, TrackingResult& result, std::vector<TrackedMeasurement> inliers) {
   if (const KeyFrameReason reason = wants_keyframe(result, frame.index); reason != KeyFrameReason::none) {
     request_keyframe(frame, result.T_c_w, std::move(inliers), reason);
     result.keyframe_requested = true;
   }
-  return result;
 }
 
 Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {

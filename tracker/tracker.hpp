@@ -9,6 +9,8 @@
 // which points to search when there are too many, is seeded per frame.
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <random>
 #include <vector>
 
@@ -93,8 +95,12 @@ class Tracker {
   // The coarse + fine stages and pose updates from `T_start`; fills `result`.
   std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const Frame& frame,
                                              TrackingResult& result);
+  // A pose for a lost frame: the small blurry image's, else ORB + PnP's;
+  // either only if the normal search from it tracks well.
+  std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> relocalise(const Frame& frame);
   enum class KeyFrameReason { none, moved, turned };
   KeyFrameReason wants_keyframe(const TrackingResult& result, std::size_t frame_index) const;
+  void consider_keyframe(const Frame& frame, TrackingResult& result, std::vector<TrackedMeasurement> inliers);
   void request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vector<TrackedMeasurement> measurements,
                         KeyFrameReason reason);
 
@@ -102,6 +108,7 @@ class Tracker {
   const Map& map_;
   KeyFrameQueue& keyframes_;
   TrackerOptions options_;
+  DescriptorRelocaliser descriptor_relocaliser_;
 
   bool started_ = false;
   SE3d T_c_w_;

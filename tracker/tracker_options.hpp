@@ -9,6 +9,7 @@
 #include "core/patch/patch_search.hpp"
 #include "core/patch/patch_warp.hpp"
 #include "tracker/pose_update.hpp"
+#include "tracker/descriptor_relocaliser.hpp"
 #include "tracker/relocaliser.hpp"
 
 namespace facadeslam {
@@ -23,6 +24,8 @@ struct TrackerOptions {
   patch::SearchOptions search{.max_zmssd_per_pixel = 800.f, .dense_radius = 3};
   PoseUpdateOptions pose;
   RelocaliserOptions relocaliser;
+  // When the small blurry image gives no pose that tracks well: ORB + PnP.
+  DescriptorRelocaliserOptions descriptor_relocaliser;
 
   // Coarse stage: a few points found at the coarse levels, searched over a
   // wide radius, to survive fast motion. Radii are in level-0 pixels.
@@ -48,9 +51,22 @@ struct TrackerOptions {
   // from too far round, so the ratio stays low while hundreds of points
   // still pin the pose down.
   int good_found = 150;
+  // Inliers this far from their projections (RMS, level-0 pixels) are not
+  // good tracking whatever their number: on a facade's repeated windows the
+  // search can find the neighbouring corner for most points and the pose
+  // settles between the two (measured: Strecha views 15 degrees apart
+  // "tracked" at 5-7 px with the rotation half the true one; sharp video
+  // tracks at 0.3-2.2 px: visp-cube, the demo, KITTI, templeRing).
+  double max_good_rms_px = 3.0;
   // Bad frames in a row still tracked from the motion model before the
   // relocaliser takes over (PTAM's NUM_LOST_FRAMES).
   int lost_frames_before_relocalising = 3;
+  // ... but the relocaliser is also tried at once on the first bad frame:
+  // when the view jumped (a multi-view set, a dropped stretch of video) the
+  // frames the motion model would spend are lost for nothing, and the
+  // relocaliser only accepts a pose that tracks well, so a blurred frame
+  // costs its time but no wrong pose.
+  bool relocalise_on_first_bad_frame = true;
 
   // Keyframes: only when tracking is good, enough frames have passed, and no
   // keyframe sees the scene as the camera does now: every keyframe is either

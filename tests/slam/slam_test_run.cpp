@@ -49,6 +49,7 @@ double percentile(std::vector<double> v, double q) {
 }  // namespace
 
 void SlamRunLog::add(FrameReport report) {
+  if (report.initial_reference) estimate.push_back({report.initial_reference->second, Eigen::Isometry3d::Identity()});
   if (report.has_pose) estimate.push_back({report.timestamp, report.T_c_w.inverse().isometry()});
   if (report.status == FrameStatus::tracking || report.status == FrameStatus::relocalised) {
     const StageTimings& t = report.tracking.timings;
