@@ -124,8 +124,9 @@ int run_replay(ReplayOptions o) {
         semantics::map_label_accuracy(system.map(), [&](std::size_t index) { return gt_labels->class_ids(index); });
   const ReplayOutputs outputs = write_replay_outputs(
       {o.out, o.save_map.empty() ? o.out / "map.fslmap" : o.save_map, o.gt}, info, log, system, source->stats());
-  std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu keyframes, %zu points -> %s\n",
-              log.frames, log.tracked, log.lost, log.relocalisations, system.map().keyframe_count(),
+  std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu map resets, %zu keyframes, "
+              "%zu points -> %s\n",
+              log.frames, log.tracked, log.lost, log.relocalisations, system.map_resets(), system.map().keyframe_count(),
               outputs.cloud_points, o.out.string().c_str());
   if (const Json* ate = outputs.report.find("ate_rmse_m")) {
     std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path", ate->as_double(),

@@ -272,6 +272,11 @@ void MapMaker::stop() {
   thread_.join();
 }
 
+void MapMaker::reset() {
+  map_changed_since_global_ba_ = false;
+  keyframes_since_global_ba_ = 0;
+}
+
 void MapMaker::run() {
   for (;;) {
     queue_.wait_until([&] { return map_changed_since_global_ba_; });

@@ -71,6 +71,10 @@ class MapMaker {
   void start();
   void stop();  // finishes queued candidates, then joins
 
+  // A map reset (the map is being cleared): forgets the old map's global-BA
+  // bookkeeping; statistics run on. Threaded mode: stop() first.
+  void reset();
+
   MapMakerStats stats() const;
 
  private:

@@ -41,6 +41,8 @@ class Initialiser {
   // Feeds one frame (with its pyramid). Returns the frame's pose once the
   // first map has been built from the reference and this frame.
   std::optional<StartPose> add_frame(const Frame& frame);
+  // Start-up begins again with the next frame as the reference (a map reset).
+  void reset() { reference_.reset(); }
 
  private:
   void restart(const Frame& frame, const char* why);

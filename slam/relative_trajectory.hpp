@@ -37,6 +37,8 @@ class RelativeTrajectory {
 
   const std::vector<RelativeFramePose>& frames() const { return frames_; }
   std::size_t size() const { return frames_.size(); }
+  // Drops every frame (a map reset: their poses are in the old map's frame).
+  void clear() { frames_.clear(); }
 
   // Camera-to-world poses as tracked, in the order they were added.
   Trajectory online() const;

@@ -76,6 +76,13 @@ std::vector<std::string> class_names() {
   return names;
 }
 
+void read_reset(const ConfigNode& c, MapResetOptions& r) {
+  r.young_map_frames = c.get_int("young_map_frames", Range::closed(0, 1000000), r.young_map_frames);
+  r.young_map_lost_frames = c.get_int("young_map_lost_frames", Range::closed(1, 100000), r.young_map_lost_frames);
+  r.lost_frames = c.get_int("lost_frames", Range::closed(0, 1000000), r.lost_frames);
+  c.finish();
+}
+
 }  // namespace
 
 ClassVotes SemanticsOptions::class_weights() const {
@@ -117,6 +124,7 @@ SlamOptions load_slam_options(const std::filesystem::path& path) {
   const ConfigNode root = ConfigNode::load_file(path);
   if (const auto tracker = root.optional_child("tracker")) read_tracker(*tracker, options.tracker);
   if (const auto mapmaker = root.optional_child("mapmaker")) read_mapmaker(*mapmaker, options.initialisation, options.mapmaker);
+  if (const auto reset = root.optional_child("map_reset")) read_reset(*reset, options.reset);
   root.finish();
   return options;
 }

@@ -41,6 +41,21 @@ struct SemanticsOptions {
   ClassVotes class_weights() const;
 };
 
+// When the map is given up and start-up begins again (ORB-SLAM resets a
+// map lost within its first keyframes). A reset discards the map and the
+// poses tracked in it: they are in another frame and scale than the next map's.
+struct MapResetOptions {
+  // A map lost within this many frames of its initialisation, for this many
+  // frames in a row: a bad start (wrong scale, too little parallax), not
+  // worth keeping. (Age, not keyframes: a slow pan tracks well for seconds
+  // on 4 keyframes.)
+  int young_map_frames = 30;
+  int young_map_lost_frames = 8;
+  // Any map lost for this many frames in a row: the camera has left it for
+  // good as far as relocalisation can tell; 0 never resets an old map.
+  int lost_frames = 90;
+};
+
 struct SlamOptions {
   // Start-up's two-view initialisation; its keys live in the config's
   // `mapmaker:` section (init_*), where PTAM users look for them.
@@ -48,6 +63,7 @@ struct SlamOptions {
   TrackerOptions tracker;
   MapMakerOptions mapmaker;
   SemanticsOptions semantics;
+  MapResetOptions reset;
   // Synchronous mode: map maker work runs inline at each keyframe, so a run
   // is reproducible bit for bit (set by --sync).
   bool synchronous = false;

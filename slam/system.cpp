@@ -65,6 +65,7 @@ std::optional<semantics::SemanticWorkerStats> System::semantic_stats() const {
 
 void System::start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity) {
   initialised_ = true;
+  initialised_at_ = frame_index;
   tracker_.start(T_c_w, frame_index, velocity);
   if (!options_.synchronous) {
     map_maker_.start();
@@ -79,6 +80,7 @@ void System::load_map(const std::filesystem::path& path) {
   // Nothing is known of the camera yet: the tracker starts lost and relocalises.
   start_tracking(map_.snapshot_keyframes().back().T_c_w, 0, Eigen::Matrix<double, 6, 1>::Zero());
   tracker_.mark_lost();
+  map_loaded_ = true;
 }
 
 FrameReport System::process(Frame frame) {
@@ -118,9 +120,46 @@ FrameReport System::process(Frame frame) {
       if (worker_) worker_->process_pending();
     }
     log_tracking(report);
+    if (!report.has_pose && should_reset(frame.index)) {
+      reset_map(frame);
+      report.map_reset = true;
+    }
   }
   report.total_ms = total.elapsed_ms();
   return report;
+}
+
+bool System::should_reset(std::size_t frame_index) const {
+  if (map_loaded_) return false;
+  const int lost = tracker_.lost_frames();
+  const MapResetOptions& r = options_.reset;
+  const auto lost_since = static_cast<std::ptrdiff_t>(frame_index) - lost + 1;
+  const bool young = lost_since - static_cast<std::ptrdiff_t>(initialised_at_) <= r.young_map_frames;
+  if (young && lost >= r.young_map_lost_frames) return true;
+  return r.lost_frames > 0 && lost >= r.lost_frames;
+}
+
+void System::reset_map(const Frame& frame) {
+  spdlog::info("frame {}: map reset after {} lost frames ({} keyframes, {} points): initialising again", frame.index,
+               tracker_.lost_frames(), map_.keyframe_count(), map_.point_count());
+  // The threads first: nothing may touch the map while it is emptied. What
+  // they had queued belongs to the old map.
+  queue_.reopen();
+  if (!options_.synchronous) {
+    map_maker_.stop();
+    if (worker_) worker_->stop();
+  }
+  queue_.reopen();
+  new_points_.reopen();
+  map_.clear();
+  map_maker_.reset();
+  tracker_.reset();
+  poses_discarded_ += trajectory_.size();
+  trajectory_.clear();
+  initialiser_.reset();
+  initialiser_.add_frame(frame);  // the new reference
+  initialised_ = false;
+  ++map_resets_;
 }
 
 void System::record_pose(const FrameReport& report) {

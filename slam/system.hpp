@@ -42,6 +42,9 @@ struct FrameReport {
   // against (index, timestamp), the first keyframe, whose pose (the world
   // origin) is known only now. The trajectories have it.
   std::optional<std::pair<std::size_t, double>> initial_reference;
+  // The map was given up on this frame (MapResetOptions): start-up begins
+  // again with this frame as its reference.
+  bool map_reset = false;
   double pyramid_ms = 0.0;
   double total_ms = 0.0;
 };
@@ -69,6 +72,9 @@ class System {
   Trajectory final_trajectory() const;
 
   bool initialised() const { return initialised_; }
+  // Maps given up so far, and the poses that went with them.
+  std::size_t map_resets() const { return map_resets_; }
+  std::size_t poses_discarded_by_resets() const { return poses_discarded_; }
   const Map& map() const { return map_; }
   const Camera& camera() const { return camera_; }
   MapMakerStats map_maker_stats() const { return map_maker_.stats(); }
@@ -77,6 +83,11 @@ class System {
 
  private:
   void start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity);
+  // Whether the map, lost since some frames, should be given up.
+  bool should_reset(std::size_t frame_index) const;
+  // Stops the threads, empties the map and everything made from it, and
+  // makes `frame` start-up's new reference.
+  void reset_map(const Frame& frame);
   // Records a frame with a pose against its reference keyframe, the
   // keyframe nearest the camera (relative_trajectory.hpp).
   void record_pose(const FrameReport& report);
@@ -93,6 +104,9 @@ class System {
   Tracker tracker_;
   Initialiser initialiser_;
   bool initialised_ = false;
+  std::size_t initialised_at_ = 0;  // the frame the map was initialised on
+  bool map_loaded_ = false;  // a loaded map is relocalised against, never reset
+  std::size_t map_resets_ = 0, poses_discarded_ = 0;
   RelativeTrajectory trajectory_;
 };
 

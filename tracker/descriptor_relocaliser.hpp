@@ -53,6 +53,8 @@ class DescriptorRelocaliser {
   // are tried); the best PnP solution over them, or nothing.
   std::optional<DescriptorRelocalisation> relocalise(const ImagePyramid& frame, const Map& map,
                                                      const std::vector<KeyFrameSnapshot>& keyframes);
+  // Forgets the cached keyframe descriptors (a map reset).
+  void clear() { cache_.clear(); }
 
  private:
   struct KeyFrameDescriptors {

@@ -55,6 +55,13 @@ void Tracker::start(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Mat
   last_keyframe_frame_ = frame_index;
 }
 
+void Tracker::reset() {
+  started_ = false;
+  lost_frames_ = 0;
+  velocity_.setZero();
+  descriptor_relocaliser_.clear();
+}
+
 bool Tracker::unreliable(const MapPoint& point) const {
   if (options_.unreliable_classes.none()) return false;
   const SemanticLabel label = point.label();

@@ -71,6 +71,10 @@ class Tracker {
   TrackingResult track(const Frame& frame);
 
   bool is_lost() const { return lost_frames_ > 0; }
+  // Frames in a row without a pose.
+  int lost_frames() const { return lost_frames_; }
+  // The map was reset: nothing to track until start() again.
+  void reset();
 
  private:
   struct Candidate;  // a projected map point (tracker.cpp)

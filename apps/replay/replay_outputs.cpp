@@ -128,6 +128,10 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["frames_lost"] = log.lost;
   report["frames_corrupt_skipped"] = read_stats.frames_skipped_corrupt;
   report["relocalisations"] = log.relocalisations;
+  // Maps given up (lost early or for long) and the tracked poses dropped
+  // with them: the trajectories hold the last map's frames only.
+  report["map_resets"] = system.map_resets();
+  report["poses_discarded_by_resets"] = system.poses_discarded_by_resets();
   report["keyframes"] = system.map().keyframe_count();
   report["points"] = cloud_points;
   Json timings = log.timings();

@@ -60,6 +60,14 @@ class BlockingQueue {
     return closed_;
   }
 
+  // Empties the queue and opens it again (a map reset: the consumer thread
+  // has been joined, and what was queued belonged to the old map).
+  void reopen() {
+    std::lock_guard lock(mutex_);
+    items_.clear();
+    closed_ = false;
+  }
+
  private:
   mutable std::mutex mutex_;
   std::condition_variable changed_;

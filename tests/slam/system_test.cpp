@@ -131,5 +131,49 @@ TEST(System, SemanticWorkerLabelsTheNewPoints) {
   }
 }
 
+// A map lost within its first keyframes is a bad start, not worth keeping
+// (slam.yaml's map_reset): black frames soon after initialisation make the
+// young map lost; after young_map_lost_frames it is reset, start-up begins
+// again on the real images, and the trajectories hold the new map's frames
+// only. Both modes: threaded, the reset stops and restarts the map maker's
+// thread (the ThreadSanitizer build runs this test too).
+TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
+  test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 100);
+  for (const bool synchronous : {true, false}) {
+    SCOPED_TRACE(synchronous ? "synchronous" : "threaded");
+    SlamOptions options;
+    options.synchronous = synchronous;
+    System system(scene.camera(), options);
+    test::SlamRunLog log;
+    int black_from = -1;
+    constexpr int kBlackFrames = 15;
+    for (int i = 0; i < scene.size(); ++i) {
+      cv::Mat image = scene.render(i);
+      if (black_from < 0 && system.initialised()) black_from = i + 2;
+      if (black_from >= 0 && i >= black_from && i < black_from + kBlackFrames) image.setTo(cv::Scalar::all(0));
+      log.add(system.process({static_cast<std::size_t>(i), scene.timestamp(i), image}));
+    }
+    system.finish();
+    ASSERT_GE(black_from, 0) << "never initialised";
+    EXPECT_EQ(system.map_resets(), 1u);
+    // The reset comes once the young map has been lost young_map_lost_frames frames.
+    int reset_at = -1;
+    for (const FrameReport& f : log.frames)
+      if (f.map_reset) reset_at = static_cast<int>(f.index);
+    EXPECT_EQ(reset_at, black_from + options.reset.young_map_lost_frames - 1);
+    // Initialised again on the real images, tracked from then on.
+    ASSERT_TRUE(system.initialised());
+    const FrameReport& last = log.frames.back();
+    EXPECT_TRUE(last.has_pose) << to_string(last.status);
+    EXPECT_GE(system.poses_discarded_by_resets(), 3u);  // the reference, the initial frame, the frames before the black
+    // Only the new map's frames, all after the black ones.
+    const Trajectory online = system.online_trajectory(), final = system.final_trajectory();
+    ASSERT_GE(final.size(), 3u);
+    EXPECT_EQ(online.size(), final.size());
+    EXPECT_GE(final.front().timestamp, scene.timestamp(black_from + kBlackFrames - 1));
+    EXPECT_LT(test::evaluate(scene, final).ate_percent_of_path, 10.0);
+  }
+}
+
 }  // namespace
 }  // namespace facadeslam
