@@ -269,10 +269,17 @@ TrackingResult Tracker::track(const Frame& frame) {
   // Lost: relocalise, or stay lost.
   auto relocalised = [&](std::pair<TrackingResult, std::vector<TrackedMeasurement>> found) {
     TrackingResult& result = found.first;
+    // Relocalised on the first bad frame, the last pose is the previous
+    // frame's: the motion between them is the motion model's best guess
+    // (a car entering a turn relocalises once, not every frame of it).
+    // After a longer loss the motion is unknown.
+    if (lost_frames_ == 0)
+      velocity_ = (result.T_c_w * T_c_w_.inverse()).log();
+    else
+      velocity_.setZero();
     lost_frames_ = 0;
-    velocity_.setZero();
     T_c_w_ = result.T_c_w;
-    found_at_keyframe_ = result.fine_found;
+    found_at_keyframe_ = std::max(found_at_keyframe_, result.fine_found);
     result.tracked = true;
     result.relocalised = true;
     // A relocalised view may be new (a multi-view set): it may make a keyframe like any well-tracked frame.

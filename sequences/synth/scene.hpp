@@ -32,6 +32,16 @@ struct FacadeSpec {
   double facing_deg = 0.0;  // azimuth of the outward normal (0 = +x, 90 = +y)
 };
 
+// A further street of the same cross-section as `street` (a scene that
+// turns corners): its axis runs from `origin` for `length` metres along the
+// azimuth `heading`. Where streets meet, start the branch at the other
+// street's outer edge: overlapping ground quads would fight over pixels.
+struct StreetBranch {
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  // metres
+  double heading_deg = 0.0;                          // azimuth of the axis (0 = +x, 90 = +y)
+  double length = 50.0;                              // metres
+};
+
 // The ground: a road along the x axis centred on y = 0, pavements either side.
 struct StreetSpec {
   double road_width = 8.0;      // metres
@@ -39,6 +49,7 @@ struct StreetSpec {
   double start = -20.0;         // x range covered, metres
   double end = 100.0;
   double texel = 0.02;          // metres per texel of the procedural textures
+  std::vector<StreetBranch> branches;  // the scene's `streets:` list
 };
 
 struct SkySpec {
@@ -104,7 +115,7 @@ struct CarSpec {
   Eigen::Vector2d to = Eigen::Vector2d::Zero();
   double facing_deg = 0.0;
   double start = 0.0;   // seconds: when it is at `from`
-  double speed = 5.0;   // metres per second
+  double speed = 5.0;   // metres per second; 0: parked at `from`
   double period = 0.0;  // seconds between repeated passes (0: once)
 };
 

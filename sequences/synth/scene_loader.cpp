@@ -108,6 +108,15 @@ StreetSpec read_street(const ConfigNode& node) {
   return s;
 }
 
+StreetBranch read_branch(const ConfigNode& node) {
+  StreetBranch b;
+  b.origin = vector2(node, "origin");
+  b.heading_deg = node.get_double("heading", Range::closed(-360, 360));
+  b.length = node.get_double("length", Range::positive(1e5));
+  node.finish();
+  return b;
+}
+
 SkySpec read_sky(const ConfigNode& node) {
   SkySpec s;
   s.zenith_rgb = colour(node, "zenith", s.zenith_rgb);
@@ -201,14 +210,15 @@ CarSpec read_car(const ConfigNode& node, const fs::path& photo_root) {
   require_class(node, c.photo, FacadeClass::car);
   c.width = node.get_double("width", Range::positive(100));
   c.from = vector2(node, "from");
-  c.to = vector2(node, "to");
   c.facing_deg = node.get_double("facing", Range::closed(-360, 360));
   c.start = node.get_double("start", Range::closed(-1e6, 1e6), 0.0);
-  c.speed = node.get_double("speed", Range::positive(200));
+  // Speed 0: a parked car, standing at `from` the whole run (no `to`).
+  c.speed = node.get_double("speed", Range::closed(0, 200));
+  c.to = c.speed > 0.0 ? vector2(node, "to") : c.from;
   c.period = node.get_double("period", Range::non_negative(1e6), 0.0);
   node.finish();
-  if ((c.to - c.from).norm() < 1e-6) node.fail("to", "a point other than `from`");
-  if (c.period > 0.0 && c.period < (c.to - c.from).norm() / c.speed)
+  if (c.speed > 0.0 && (c.to - c.from).norm() < 1e-6) node.fail("to", "a point other than `from`");
+  if (c.speed > 0.0 && c.period > 0.0 && c.period < (c.to - c.from).norm() / c.speed)
     node.fail("period", "0 (once) or at least the time one pass takes (" +
                             number((c.to - c.from).norm() / c.speed) + " s)",
               number(c.period));
@@ -243,7 +253,7 @@ void check_trajectory_covers_frames(const SceneSpec& scene, const std::string& w
 }
 
 SceneSpec load_scene(const fs::path& path) {
-  const SceneYaml yaml(path, {"facades", "trajectory", "lighting", "cars", "vegetation"});
+  const SceneYaml yaml(path, {"facades", "trajectory", "lighting", "cars", "vegetation", "streets"});
   const ConfigNode& root = yaml.root();
   SceneSpec scene;
   scene.path = path;
@@ -273,6 +283,7 @@ SceneSpec load_scene(const fs::path& path) {
               root.get_string("photos", "."));
 
   scene.street = read_street(root.child("street"));
+  for (const ConfigNode& item : yaml.list("streets")) scene.street.branches.push_back(read_branch(item));
   if (const auto sky = root.optional_child("sky")) scene.sky = read_sky(*sky);
 
   if (yaml.list("facades").empty()) root.fail("facades", "a list of at least one facade");

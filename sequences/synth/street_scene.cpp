@@ -21,18 +21,34 @@ constexpr int kTileTexels = 4096;
 constexpr int kVegetationRows = 8;
 enum SceneStream : std::uint64_t { kRoad = 11, kPavement, kSky, kSway };
 
-void add_ground_strip(render::Scene& scene, render::Renderer& renderer, const StreetSpec& street, double y_low,
-                      double y_high, std::uint8_t label, int side, std::uint64_t seed) {
+// Where a street's ground lies: its own frame (x along the axis from
+// `start` to `end`, y across) placed in the world by a rotation about z and
+// a shift. The main street's placement is the identity.
+struct GroundPlacement {
+  double start = 0.0, end = 0.0;
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();
+  double heading = 0.0;  // radians
+  Eigen::Vector3d to_world(const Eigen::Vector3d& v, bool point) const {
+    const double c = std::cos(heading), s = std::sin(heading);
+    Eigen::Vector3d w(c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z());
+    if (point) w.head<2>() += origin;
+    return w;
+  }
+};
+
+void add_ground_strip(render::Scene& scene, render::Renderer& renderer, const StreetSpec& street,
+                      const GroundPlacement& placement, double y_low, double y_high, std::uint8_t label, int side,
+                      std::uint64_t seed) {
   // The strip is exactly y_high - y_low wide (neighbouring strips meet
   // without overlapping, so no two coplanar surfaces fight over a pixel);
   // its texels are stretched across by at most half a texel in all.
   const double height = y_high - y_low;
   const int rows = std::max(1, static_cast<int>(std::lround(height / street.texel)));
-  const double length = street.end - street.start;
+  const double length = placement.end - placement.start;
   const int columns = static_cast<int>(std::ceil(length / street.texel));
   for (int first = 0; first < columns; first += kTileTexels) {
     GroundArea area;
-    area.x0 = street.start + first * street.texel;
+    area.x0 = placement.start + first * street.texel;
     area.y1 = y_high;
     area.columns = std::min(kTileTexels, columns - first);
     area.rows = rows;
@@ -40,9 +56,9 @@ void add_ground_strip(render::Scene& scene, render::Renderer& renderer, const St
     area.texel_y = height / rows;
     const cv::Mat texture =
         side == 0 ? road_texture(area, street, seed) : pavement_texture(area, street, side, seed);
-    const Eigen::Vector3d top_left(area.x0, area.y1, 0.0);
-    const Eigen::Vector3d right(area.columns * street.texel, 0.0, 0.0);
-    const Eigen::Vector3d down(0.0, -height, 0.0);
+    const Eigen::Vector3d top_left = placement.to_world({area.x0, area.y1, 0.0}, true);
+    const Eigen::Vector3d right = placement.to_world({area.columns * street.texel, 0.0, 0.0}, false);
+    const Eigen::Vector3d down = placement.to_world({0.0, -height, 0.0}, false);
     scene.meshes.push_back(render::make_textured_quad(top_left, right, down, renderer.add_colour_texture(texture),
                                                       {}, label));
   }
@@ -61,6 +77,10 @@ Placement stand_upright(const Eigen::Vector3d& position, double facing_deg, doub
 }
 
 bool car_position(const CarSpec& car, double t, Eigen::Vector2d& position) {
+  if (car.speed <= 0.0) {  // parked
+    position = car.from;
+    return true;
+  }
   const double length = (car.to - car.from).norm();
   double since = t - car.start;
   if (car.period > 0.0) since -= std::floor(since / car.period) * car.period;
@@ -91,14 +111,27 @@ void cut_out(const Photo& photo, std::uint8_t keep, cv::Mat& colour, cv::Mat& la
 
 StreetScene::StreetScene(const SceneSpec& spec, render::Renderer& renderer) : spec_(spec) {
   const StreetSpec& street = spec.street;
+  std::vector<GroundPlacement> streets{{street.start, street.end, Eigen::Vector2d::Zero(), 0.0}};
+  for (std::size_t i = 0; i < street.branches.size(); ++i) {
+    const StreetBranch& b = street.branches[i];
+    // The textures are functions of the street's own coordinates: each
+    // branch gets its own stretch of them, so no two streets look alike.
+    const double offset = 100000.0 * static_cast<double>(i + 1);
+    streets.push_back({offset, offset + b.length, b.origin - offset * Eigen::Vector2d(std::cos(deg_to_rad(b.heading_deg)),
+                                                                                    std::sin(deg_to_rad(b.heading_deg))),
+                       deg_to_rad(b.heading_deg)});
+  }
   const double half = 0.5 * street.road_width;
-  add_ground_strip(static_, renderer, street, -half, half, id_of(FacadeClass::road), 0, hash64(spec.seed, kRoad));
-  if (street.pavement_width > 0.0) {
-    const std::uint64_t seed = hash64(spec.seed, kPavement);
-    add_ground_strip(static_, renderer, street, half, half + street.pavement_width, id_of(FacadeClass::pavement), 1,
-                     seed);
-    add_ground_strip(static_, renderer, street, -half - street.pavement_width, -half,
-                     id_of(FacadeClass::pavement), -1, seed);
+  for (const GroundPlacement& ground : streets) {
+    add_ground_strip(static_, renderer, street, ground, -half, half, id_of(FacadeClass::road), 0,
+                     hash64(spec.seed, kRoad));
+    if (street.pavement_width > 0.0) {
+      const std::uint64_t seed = hash64(spec.seed, kPavement);
+      add_ground_strip(static_, renderer, street, ground, half, half + street.pavement_width,
+                       id_of(FacadeClass::pavement), 1, seed);
+      add_ground_strip(static_, renderer, street, ground, -half - street.pavement_width, -half,
+                       id_of(FacadeClass::pavement), -1, seed);
+    }
   }
   for (const FacadeSpec& facade : spec.facades) {
     const Placement p = stand_upright(facade.position, facade.facing_deg, facade.width, facade.photo.colour.size());
