@@ -139,6 +139,11 @@ int run_replay(ReplayOptions o) {
   if (info.label_accuracy && info.label_accuracy->accuracy())
     std::printf("replay: label accuracy %.3f over %zu labelled points\n", *info.label_accuracy->accuracy(),
                 info.label_accuracy->evaluated);
+  if (const auto stats = system.semantic_stats(); stats && stats->grey_keyframes > 0)
+    std::fprintf(stderr,
+                 "facadeslam: the images are grey (%zu of %zu labelling jobs): the semantic model needs colour, "
+                 "their points stay unlabelled (--semantics off silences this)\n",
+                 stats->grey_keyframes, stats->keyframes);
   if (!system.initialised()) {
     std::fprintf(stderr, "facadeslam: the map was never initialised (not enough parallax?); see %s\n",
                  (o.out / "report.json").string().c_str());

@@ -64,6 +64,8 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
   // Per observation: the worker describes and classifies a point once per
   // keyframe that measures it.
   out["observations_labelled"] = stats->observations_labelled;
+  // Keyframes whose image was grey: the colour model does not label them.
+  out["grey_keyframes"] = stats->grey_keyframes;
   out["worker_us_per_point"] = stats->observations_labelled
                                    ? 1000.0 * total_ms / static_cast<double>(stats->observations_labelled)
                                    : 0.0;

@@ -13,6 +13,16 @@ ClassVotes SemanticWorker::all_ones() {
   return ones;
 }
 
+bool is_grey(const cv::Mat& bgr) {
+  // Every 7th pixel of every 7th row: enough to tell, cheap beside the descriptor.
+  for (int y = 0; y < bgr.rows; y += 7) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; x += 7)
+      if (row[x][0] != row[x][1] || row[x][1] != row[x][2]) return false;
+  }
+  return true;
+}
+
 SemanticWorker::SemanticWorker(ForestModel model, KeyFramePointsQueue& queue, const ClassVotes& class_weights)
     : model_(std::move(model)),
       class_weights_(class_weights),
@@ -30,8 +40,12 @@ void SemanticWorker::label(const KeyFramePoints& job) {
   std::vector<std::shared_ptr<MapPoint>> points;
   std::vector<cv::Point2f> keypoints;
   const cv::Mat& colour = job.keyframe->colour();
-  // The colour image may be missing (a grey sequence): nothing to describe.
-  const bool describable = !colour.empty() && colour.type() == CV_8UC3;
+  // The colour image may be missing, or grey in three channels (a grey
+  // sequence such as KITTI's, decoded to BGR): the forest learnt its classes
+  // from colour photographs, and on grey it calls a third of a street sky.
+  // Nothing to describe: the points stay unlabelled, counted as grey.
+  const bool grey = !colour.empty() && colour.type() == CV_8UC3 && is_grey(colour);
+  const bool describable = !colour.empty() && colour.type() == CV_8UC3 && !grey;
   std::size_t skipped = 0;
   for (const auto& [point, px] : job.points) {
     // A point the map maker has dropped since the hand-off gets no votes.
@@ -64,6 +78,7 @@ void SemanticWorker::label(const KeyFramePoints& job) {
   }
   std::lock_guard lock(stats_mutex_);
   ++stats_.keyframes;
+  stats_.grey_keyframes += grey;
   stats_.observations_labelled += points.size();
   stats_.observations_skipped += skipped;
   stats_.keyframe_ms.push_back(watch.elapsed_ms());

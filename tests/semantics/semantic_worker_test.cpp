@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "core/map/map.hpp"
 #include "tests/support/test_support.hpp"
@@ -126,6 +127,25 @@ TEST_F(SemanticWorkerTest, SkipsBadPointsAndKeyframesWithoutColour) {
   EXPECT_NE(points[4]->label().label, kUnlabelled);
   EXPECT_EQ(worker.stats().observations_skipped, 11u);
   EXPECT_EQ(worker.stats().observations_labelled, 9u);
+}
+
+// A grey sequence decoded to BGR (KITTI): three equal channels. The forest
+// learnt from colour photographs; its labels on grey would be wrong, so none.
+TEST_F(SemanticWorkerTest, LeavesTheKeyframesOfAGreySequenceUnlabelled) {
+  cv::Mat grey;
+  cv::cvtColor(colour_, grey, cv::COLOR_BGR2GRAY);
+  cv::cvtColor(grey, grey, cv::COLOR_GRAY2BGR);
+  EXPECT_TRUE(is_grey(grey));
+  EXPECT_FALSE(is_grey(colour_));
+  std::swap(colour_, grey);
+  const KeyFramePoints job_of_grey = job(true, 10);
+  std::swap(colour_, grey);
+  KeyFramePointsQueue queue;
+  SemanticWorker worker(model_, queue);
+  worker.label(job_of_grey);
+  for (const auto& [p, px] : job_of_grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
+  EXPECT_EQ(worker.stats().grey_keyframes, 1u);
+  EXPECT_EQ(worker.stats().observations_labelled, 0u);
 }
 
 TEST_F(SemanticWorkerTest, TheThreadLabelsWhatIsQueuedBeforeItStops) {
