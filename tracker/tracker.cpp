@@ -155,7 +155,9 @@ std::vector<PoseMeasurement> Tracker::pose_measurements(const std::vector<PointS
 
 std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const Frame& frame,
                                                     TrackingResult& result) {
+  const Stopwatch snapshot_watch;
   const std::vector<PointSnapshot> points = map_.snapshot_points();
+  result.timings.snapshot_ms += snapshot_watch.elapsed_ms();
   // One row index of the frame's corners, shared by every search of both stages.
   const patch::SearchImage image(*frame.pyramid);
   std::mt19937_64 rng(options_.seed * 0x9E3779B97F4A7C15ULL + frame.index);

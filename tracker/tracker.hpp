@@ -29,6 +29,7 @@ const char* to_string(TrackingQuality quality);
 
 struct StageTimings {
   double coarse_ms = 0, fine_ms = 0, pose_ms = 0, relocalise_ms = 0;
+  double snapshot_ms = 0;  // copying the map's points for this frame
 };
 
 // Why the fine stage's searches failed (diagnostics, --verbose).

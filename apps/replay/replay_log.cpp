@@ -32,6 +32,9 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
     coarse_ms.push_back(r.tracking.timings.coarse_ms);
     fine_ms.push_back(r.tracking.timings.fine_ms);
     pose_ms.push_back(r.tracking.timings.pose_ms);
+    snapshot_ms.push_back(r.tracking.timings.snapshot_ms);
+    const StageTimings& t = r.tracking.timings;
+    tracker_ms.push_back(r.pyramid_ms + t.snapshot_ms + t.coarse_ms + t.fine_ms + t.pose_ms + t.relocalise_ms);
   }
 }
 
@@ -40,6 +43,11 @@ Json ReplayLog::timings() const {
   t["pyramid_fast"] = timing_summary(pyramid_ms);
   t["coarse"] = timing_summary(coarse_ms);
   t["fine"] = timing_summary(fine_ms);
+  t["map_snapshot"] = timing_summary(snapshot_ms);
+  // The tracker's own work per tracked frame (pyramid + FAST, map
+  // snapshot, both search stages, pose updates, relocalisation); frame_total
+  // adds start-up frames and, threaded, waits on the map's lock.
+  t["tracker"] = timing_summary(tracker_ms);
   t["pose_update"] = timing_summary(pose_ms);
   t["frame_total"] = timing_summary(total_ms);
   return t;
