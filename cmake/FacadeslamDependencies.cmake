@@ -9,6 +9,8 @@ find_package(yaml-cpp REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(fmt REQUIRED)
+# JSON reports and checkpoints (nlohmann-json3-dev).
+find_package(nlohmann_json 3 REQUIRED)
 # The .fsmodel forest files are zlib-compressed (semantics/forest/zlib_codec.hpp).
 find_package(ZLIB REQUIRED)
 if(FACADESLAM_BUILD_TESTS)
