@@ -11,6 +11,7 @@ void add_calibrate_command(CLI::App& app);
 void add_replay_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_train_command(CLI::App& app);
+void add_optimise_command(CLI::App& app);
 void add_render_map_command(CLI::App& app);
 
 }  // namespace facadeslam::apps

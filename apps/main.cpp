@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   apps::add_calibrate_command(app);
   apps::add_synth_command(app);
   apps::add_train_command(app);
+  apps::add_optimise_command(app);
   apps::add_render_map_command(app);
 
   try {

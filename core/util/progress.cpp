@@ -6,13 +6,22 @@
 #include "core/util/logging.hpp"
 
 namespace facadeslam {
+namespace {
+thread_local bool silenced_on_this_thread = false;
+}  // namespace
+
 
 bool Progress::terminal_attached() { return ::isatty(STDOUT_FILENO) && ::isatty(STDERR_FILENO); }
 
 Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)),
       total_(total),
-      enabled_(terminal_attached() && current_verbosity() != Verbosity::quiet) {}
+      enabled_(terminal_attached() && current_verbosity() != Verbosity::quiet && !silenced_on_this_thread) {}
+
+Progress::SilenceOnThisThread::SilenceOnThisThread() : previous_(silenced_on_this_thread) {
+  silenced_on_this_thread = true;
+}
+Progress::SilenceOnThisThread::~SilenceOnThisThread() { silenced_on_this_thread = previous_; }
 
 Progress::~Progress() { finish(); }
 

@@ -24,6 +24,20 @@ class Progress {
 
   static bool terminal_attached();
 
+  // Bars made on this thread while one of these lives stay silent: work
+  // spread over worker threads under one overall bar (the optimiser's
+  // fitness evaluations train forests, whose own bars would interleave).
+  class SilenceOnThisThread {
+   public:
+    SilenceOnThisThread();
+    ~SilenceOnThisThread();
+    SilenceOnThisThread(const SilenceOnThisThread&) = delete;
+    SilenceOnThisThread& operator=(const SilenceOnThisThread&) = delete;
+
+   private:
+    bool previous_;
+  };
+
  private:
   void draw(const std::string& status);
 

@@ -1,0 +1,78 @@
+// `facadeslam optimise`: the genetic algorithm over the modular descriptor's
+// 211-bit genome (thesis III.8, IV.4) on a LabelMeFacade-layout dataset's
+// train.txt, with a validation split carved from it; results, checkpoints
+// and the winner's model in the run folder (semantics/optimiser).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "apps/cli_support.hpp"
+#include "apps/commands.hpp"
+#include "core/util/error.hpp"
+#include "semantics/optimiser/ga_options.hpp"
+#include "semantics/optimiser/optimisation_run.hpp"
+
+namespace facadeslam::apps {
+namespace optimise_command {
+namespace {
+
+struct Options {
+  semantics::OptimiseOptions run;
+  std::filesystem::path config = "configs/optimise.yaml";
+  bool config_given = false;
+  std::optional<int> population, generations;
+  bool no_model = false;
+};
+
+void run(Options& o) {
+  if (o.config_given || std::filesystem::exists(o.config)) o.run.ga = semantics::load_ga_options(o.config);
+  if (o.population) o.run.ga.population = *o.population;
+  if (o.generations) o.run.ga.generations = *o.generations;
+  if (o.run.ga.elites >= o.run.ga.population)
+    throw Error("optimise: --population " + std::to_string(o.run.ga.population) + " leaves no room beside " +
+                std::to_string(o.run.ga.elites) + " elites (" + o.config.string() + ")");
+  o.run.ga.tournament_size = std::min(o.run.ga.tournament_size, o.run.ga.population);
+  o.run.train_best_model = !o.no_model;
+  const semantics::OptimiseResult r = semantics::run_optimisation(o.run);
+  std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n",
+              r.generations, r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
+  std::printf("optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, %.3f x cv::SIFT's time, "
+              "%d values -> %s\n",
+              r.best.best, r.best.generation, r.best_evaluation.overall, r.best_evaluation.average,
+              r.best_evaluation.time_ratio, r.best_evaluation.values, (o.run.out / "best.genome").string().c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace
+}  // namespace optimise_command
+
+void add_optimise_command(CLI::App& app) {
+  using namespace optimise_command;
+  auto options = std::make_shared<Options>();
+  auto& r = options->run;
+  auto* cmd = app.add_subcommand(
+      "optimise", "Genetic algorithm over the descriptor genome on a dataset's train.txt (validation split from it)");
+  cmd->add_option("--dataset", r.dataset, "Dataset folder: train.txt, images/, labels/ (test.txt is never read)")
+      ->required();
+  cmd->add_option("--out", r.out, "Run folder: checkpoints, best.genome, best.json, fitness.json/.png, best.fsmodel")
+      ->required();
+  cmd->add_option("--population", options->population, "Genomes per generation (default: the config's, 30)")
+      ->check(CLI::Range(2, 100000));
+  cmd->add_option("--generations", options->generations, "Generations (default: the config's, 20)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--seed", r.seed, "Seed of the first generation, the operators and the validation split")
+      ->capture_default_str();
+  cmd->add_option("--workers", r.workers, "Fitness evaluations in parallel (threads)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  cmd->add_flag("--resume", r.resume, "Continue the run in --out from its newest generation-NNN.json");
+  cmd->add_option("--config", options->config, "GA settings YAML (default: configs/optimise.yaml when present)")
+      ->each([options](const std::string&) { options->config_given = true; });
+  cmd->add_flag("--no-model", options->no_model, "Do not train best.fsmodel at the end");
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace facadeslam::apps

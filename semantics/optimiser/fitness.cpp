@@ -1,0 +1,129 @@
+#include "semantics/optimiser/fitness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "core/map/semantic_classes.hpp"
+#include "core/util/error.hpp"
+#include "core/util/progress.hpp"
+#include "core/util/stopwatch.hpp"
+#include "semantics/evaluation/confusion_matrix.hpp"
+#include "semantics/evaluation/labelled_keypoints.hpp"
+#include "semantics/evaluation/training_set.hpp"
+#include "semantics/forest/forest_params.hpp"
+#include "semantics/forest/random_forest.hpp"
+#include "semantics/optimiser/ga_random.hpp"
+#include "semantics/point_descriptors/point_descriptor.hpp"
+
+namespace facadeslam::semantics {
+
+FitnessSplit split_train_list(const std::filesystem::path& dataset, const GaOptions& options, std::uint64_t seed) {
+  std::vector<LabelledImage> all = read_facade_split(dataset, "train.txt");
+  // A seeded shuffle (Fisher-Yates with the GA's own draws: the same split
+  // with every standard library).
+  GaRandom rng(seed ^ 0x5EED5B11ULL);
+  for (std::size_t i = all.size(); i > 1; --i) std::swap(all[i - 1], all[uniform_index(rng, i)]);
+  const auto validation = static_cast<std::size_t>(std::lround(options.validation_share * static_cast<double>(all.size())));
+  if (validation < 1 || validation >= all.size())
+    throw Error(dataset.string() + ": train.txt lists " + std::to_string(all.size()) +
+                " images, too few to hold out a validation share of " + std::to_string(options.validation_share) +
+                " and train on the rest");
+  FitnessSplit split;
+  split.validation.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(validation));
+  split.train.assign(all.begin() + static_cast<std::ptrdiff_t>(validation), all.end());
+  if (options.max_validation_images > 0 && split.validation.size() > options.max_validation_images)
+    split.validation.resize(options.max_validation_images);
+  if (options.max_train_images > 0 && split.train.size() > options.max_train_images)
+    split.train.resize(options.max_train_images);
+  return split;
+}
+
+nlohmann::json to_json(const FitnessSplit& split) {
+  nlohmann::json j;
+  for (const auto* part : {&split.train, &split.validation}) {
+    auto& list = j[part == &split.train ? "train" : "validation"] = nlohmann::json::array();
+    for (const LabelledImage& image : *part) list.push_back(image.name);
+  }
+  return j;
+}
+
+nlohmann::json to_json(const GenomeEvaluation& e) {
+  return {{"valid", e.valid},         {"overall", e.overall},
+          {"average", e.average},     {"time_ratio", e.time_ratio},
+          {"values", e.values},       {"objective", std::isfinite(e.objective) ? nlohmann::json(e.objective) : nlohmann::json()},
+          {"seconds", e.seconds}};
+}
+
+GenomeEvaluation evaluation_from_json(const nlohmann::json& j) {
+  GenomeEvaluation e;
+  e.valid = j.at("valid").get<bool>();
+  e.overall = j.at("overall").get<double>();
+  e.average = j.at("average").get<double>();
+  e.time_ratio = j.at("time_ratio").get<double>();
+  e.values = j.at("values").get<int>();
+  e.objective = j.at("objective").is_null() ? -std::numeric_limits<double>::infinity() : j.at("objective").get<double>();
+  e.seconds = j.at("seconds").get<double>();
+  return e;
+}
+
+double objective_of(const GenomeEvaluation& e, const FitnessWeights& w) {
+  if (!e.valid) return -std::numeric_limits<double>::infinity();
+  const double slow = std::max(0.0, e.time_ratio / w.target_time_ratio - 1.0);
+  return w.overall * e.overall + w.average * e.average - w.time * slow - w.size * e.values / 128.0;
+}
+
+FitnessEvaluator::FitnessEvaluator(FitnessSplit split, GaOptions options, std::uint64_t seed)
+    : split_(std::move(split)), options_(std::move(options)), seed_(seed) {}
+
+GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
+  const Stopwatch watch;
+  const Progress::SilenceOnThisThread quiet;
+  GenomeEvaluation e;
+  if (genome.active_value_count() == 0) {
+    e.objective = objective_of(e, options_.weights);
+    return e;
+  }
+  const std::unique_ptr<PointDescriptor> descriptor = make_point_descriptor("modular", genome);
+  const std::unique_ptr<PointDescriptor> sift = make_point_descriptor("sift", genome);
+  e.values = descriptor->width();
+
+  TrainingSetOptions set_options;
+  set_options.step = options_.step;
+  set_options.balance = true;  // the rare classes (door, sky) must count in the average rate
+  set_options.max_samples = options_.max_samples;
+  set_options.seed = seed_;
+  const TrainingSet set = build_training_set(split_.train, set_options, *descriptor);
+  ForestParams params = forest_params(genome.decode());
+  if (options_.max_trees > 0) params.trees = std::min(params.trees, options_.max_trees);
+  if (options_.max_depth > 0) params.max_depth = std::min(params.max_depth, options_.max_depth);
+  params.seed = seed_;
+  const RandomForest forest = RandomForest::train(set.samples, set.labels, params);
+
+  ConfusionMatrix confusion(static_cast<int>(kSemanticClasses.size()));
+  double descriptor_s = 0.0, sift_s = 0.0;
+  for (const LabelledImage& image : split_.validation) {
+    const LoadedLabelledImage loaded = load_labelled_image(image);
+    const LabelledKeypoints kps = labelled_keypoints(loaded.label, options_.step);
+    if (kps.points.empty()) continue;
+    Stopwatch stage;
+    const cv::Mat rows = descriptor->compute(loaded.bgr, kps.points);
+    descriptor_s += stage.elapsed_s();
+    stage.restart();
+    const cv::Mat sift_rows = sift->compute(loaded.bgr, kps.points);
+    sift_s += stage.elapsed_s();
+    const std::vector<int> predicted = forest.predict(rows);
+    for (std::size_t k = 0; k < predicted.size(); ++k) confusion.add(kps.classes[k], predicted[k]);
+  }
+  e.valid = confusion.total() > 0;
+  e.overall = e.valid ? confusion.overall_recognition_rate() : 0.0;
+  e.average = e.valid ? confusion.average_recognition_rate() : 0.0;
+  e.time_ratio = sift_s > 0.0 ? descriptor_s / sift_s : 0.0;
+  e.objective = objective_of(e, options_.weights);
+  e.seconds = watch.elapsed_s();
+  return e;
+}
+
+}  // namespace facadeslam::semantics

@@ -1,0 +1,58 @@
+#pragma once
+// A genome's fitness (issue 18, thesis IV.4): a forest trained with the
+// genome's descriptor and forest fields on the training part of train.txt,
+// tested on a validation part carved from train.txt by the run's seed
+// (test.txt is never seen), and the genome's extraction time as a ratio to
+// cv::SIFT's on the same validation keypoints, measured in the same
+// evaluation (so the ratio, not the machine, is what counts).
+//
+// evaluate() is const and thread-safe: workers call it in parallel.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "semantics/descriptor/genome.hpp"
+#include "semantics/evaluation/facade_dataset.hpp"
+#include "semantics/optimiser/ga_options.hpp"
+
+namespace facadeslam::semantics {
+
+// train.txt split by the seed: `validation_share` of it held out.
+struct FitnessSplit {
+  std::vector<LabelledImage> train, validation;
+};
+// Throws Error naming the dataset when train.txt is missing or too small to
+// leave images on both sides.
+FitnessSplit split_train_list(const std::filesystem::path& dataset, const GaOptions& options, std::uint64_t seed);
+nlohmann::json to_json(const FitnessSplit& split);
+
+struct GenomeEvaluation {
+  bool valid = false;          // a genome without an active value describes nothing
+  double overall = 0, average = 0;  // recognition rates on the validation keypoints
+  double time_ratio = 0;       // extraction time / cv::SIFT's on the same keypoints
+  int values = 0;              // descriptor length
+  double objective = 0;        // FitnessWeights applied (-infinity when invalid)
+  double seconds = 0;          // the evaluation's wall time
+};
+nlohmann::json to_json(const GenomeEvaluation& e);
+GenomeEvaluation evaluation_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception
+
+// The objective of an evaluation's figures (ga_options.hpp, FitnessWeights).
+double objective_of(const GenomeEvaluation& e, const FitnessWeights& weights);
+
+class FitnessEvaluator {
+ public:
+  FitnessEvaluator(FitnessSplit split, GaOptions options, std::uint64_t seed);
+  GenomeEvaluation evaluate(const Genome& genome) const;
+  const FitnessSplit& split() const { return split_; }
+
+ private:
+  FitnessSplit split_;
+  GaOptions options_;
+  std::uint64_t seed_;
+};
+
+}  // namespace facadeslam::semantics
