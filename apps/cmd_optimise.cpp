@@ -14,6 +14,9 @@
 #include "core/util/error.hpp"
 #include "semantics/optimiser/ga_options.hpp"
 #include "semantics/optimiser/optimisation_run.hpp"
+#ifdef FACADESLAM_HAVE_MPI
+#include "semantics/optimiser/mpi_evaluation.hpp"
+#endif
 
 namespace facadeslam::apps {
 namespace optimise_command {
@@ -27,6 +30,43 @@ struct Options {
   bool no_model = false;
 };
 
+void report(const Options& o, const semantics::OptimiseResult& r) {
+  std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n",
+              r.generations, r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
+  std::printf("optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, %.3f x cv::SIFT's time, "
+              "%d values -> %s\n",
+              r.best.best, r.best.generation, r.best_evaluation.overall, r.best_evaluation.average,
+              r.best_evaluation.time_ratio, r.best_evaluation.values, (o.run.out / "best.genome").string().c_str());
+  std::fflush(stdout);
+}
+
+#ifdef FACADESLAM_HAVE_MPI
+// Under mpirun: rank 0 runs the GA and the ranks above it evaluate. A rank
+// that fails ends them all (the others would wait for it forever).
+void run_under_mpi(const Options& o) {
+  semantics::MpiSession mpi;
+  if (mpi.size() == 1) {
+    report(o, semantics::run_optimisation(o.run));
+    return;
+  }
+  try {
+    if (mpi.rank() > 0) {
+      const semantics::FitnessEvaluator evaluator(semantics::split_train_list(o.run.dataset, o.run.ga, o.run.seed),
+                                                  o.run.ga, o.run.seed);
+      semantics::serve_mpi_evaluations(evaluator);
+      return;
+    }
+    const semantics::OptimiseResult r = semantics::run_optimisation(o.run, semantics::mpi_evaluate_batch(mpi.size()));
+    semantics::stop_mpi_workers(mpi.size());
+    report(o, r);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "facadeslam: error (MPI rank %d): %s\n", mpi.rank(), e.what());
+    std::fflush(stderr);
+    semantics::MpiSession::abort(kExitError);
+  }
+}
+#endif
+
 void run(Options& o) {
   if (o.config_given || std::filesystem::exists(o.config)) o.run.ga = semantics::load_ga_options(o.config);
   if (o.population) o.run.ga.population = *o.population;
@@ -36,14 +76,13 @@ void run(Options& o) {
                 std::to_string(o.run.ga.elites) + " elites (" + o.config.string() + ")");
   o.run.ga.tournament_size = std::min(o.run.ga.tournament_size, o.run.ga.population);
   o.run.train_best_model = !o.no_model;
-  const semantics::OptimiseResult r = semantics::run_optimisation(o.run);
-  std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n",
-              r.generations, r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
-  std::printf("optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, %.3f x cv::SIFT's time, "
-              "%d values -> %s\n",
-              r.best.best, r.best.generation, r.best_evaluation.overall, r.best_evaluation.average,
-              r.best_evaluation.time_ratio, r.best_evaluation.values, (o.run.out / "best.genome").string().c_str());
-  std::fflush(stdout);
+#ifdef FACADESLAM_HAVE_MPI
+  if (semantics::launched_by_mpi()) {
+    run_under_mpi(o);
+    return;
+  }
+#endif
+  report(o, semantics::run_optimisation(o.run));
 }
 
 }  // namespace

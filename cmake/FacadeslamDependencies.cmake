@@ -11,6 +11,9 @@ find_package(spdlog REQUIRED)
 find_package(fmt REQUIRED)
 # JSON reports and checkpoints (nlohmann-json3-dev).
 find_package(nlohmann_json 3 REQUIRED)
+# Optional: `mpirun -np N facadeslam optimise` spreads fitness evaluations
+# over ranks (libopenmpi-dev); without it optimise runs threaded only.
+find_package(MPI COMPONENTS CXX QUIET)
 # The .fsmodel forest files are zlib-compressed (semantics/forest/zlib_codec.hpp).
 find_package(ZLIB REQUIRED)
 if(FACADESLAM_BUILD_TESTS)
