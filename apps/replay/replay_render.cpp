@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <spdlog/spdlog.h>
 
@@ -15,6 +16,7 @@
 #include "apps/replay/replay_log.hpp"
 #include "core/map/semantic_classes.hpp"
 #include "core/plot/png_file.hpp"
+#include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
 #include "render/ar/ar_view.hpp"
@@ -65,6 +67,16 @@ double median(std::vector<double> values) {
 }
 
 int even(int n) { return n + (n & 1); }
+
+// A frame PNG, atomically, at zlib's fastest level: the frames are many and
+// large, and plot::save_png's level 9 took most of a rendered frame's time
+// (~100 ms at 1280x480) for files only ~20 % smaller.
+void save_frame_png(const std::filesystem::path& path, const cv::Mat& frame) {
+  write_file_atomically(path, [&](const std::filesystem::path& tmp) {
+    if (!cv::imwrite(tmp.string(), frame, {cv::IMWRITE_PNG_COMPRESSION, 1}))
+      throw Error(path.string() + ": cannot write the PNG");
+  });
+}
 
 }  // namespace
 }  // namespace replay_render_detail
@@ -240,7 +252,7 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
 
   char name[32];
   std::snprintf(name, sizeof name, "ar_%06zu.png", frame_number);
-  plot::save_png(m.frames_dir / name, frame);
+  replay_render_detail::save_frame_png(m.frames_dir / name, frame);
   m.video->write(frame);
   m.sheet.offer(caption, frame);
   ++m.rendered;
