@@ -94,7 +94,10 @@ int run_replay(ReplayOptions o) {
       // The video plays the rendered frames at 30 frames/s, slower when
       // frames are skipped, so that the motion keeps about its pace.
       const double video_fps = std::clamp(30.0 / static_cast<double>(o.render_every), 5.0, 30.0);
-      ar_render = std::make_unique<ReplayRender>(ReplayRenderOptions{o.render, o.render_every, video_fps}, camera);
+      ar_render = std::make_unique<ReplayRender>(
+          ReplayRenderOptions{o.render, o.render_every, video_fps,
+                              "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string()},
+          camera);
     } catch (const Error& e) {
       throw CLI::ValidationError("--render", e.what());
     }

@@ -107,7 +107,7 @@ struct ReplayRender::Impl {
         frames_dir(options.dir / "frames"),
         video_path(options.dir / "augmented.mp4"),
         sheet_path(options.dir / "contact_sheet.png"),
-        sheet("facadeslam replay: augmented view | map view", 12, 3, std::min(640, frame_size.width)) {
+        sheet(options.title + ": augmented view | map view", 12, 3, std::min(480, frame_size.width)) {
     try {
       fs::create_directories(frames_dir);
     } catch (const fs::filesystem_error& e) {

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct ReplayRenderOptions {
   std::filesystem::path dir;
   std::size_t every = 1;  // render frames 0, N, 2N, ...
   double video_fps = 30.0;
+  std::string title = "facadeslam replay";  // the contact sheet's, before "augmented view | map view"
 };
 
 class ReplayRender {

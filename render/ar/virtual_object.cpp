@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace facadeslam::render::ar {
 // Named, so that the unity build's other render files cannot clash with these.
@@ -114,7 +115,7 @@ std::optional<VirtualObject> place_on_plane(const PlaneFit& fit, const std::vect
     x = T_w_ref.linear().col(2);
     x -= x.dot(z) * z;
   }
-  x.normalize();
+  x = Eigen::AngleAxisd(options.yaw_deg * std::numbers::pi / 180.0, z) * x.normalized();
   VirtualObject object;
   object.T_w_o.linear().col(0) = x;
   object.T_w_o.linear().col(1) = z.cross(x);

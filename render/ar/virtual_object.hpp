@@ -46,14 +46,17 @@ std::vector<ObjectVertex> object_triangles(const VirtualObject& object);
 struct PlacementOptions {
   // Edge length as a fraction of the distance from the reference camera to
   // the anchor point, so that the cube looks the same size in any map scale.
-  double size_fraction = 0.22;
+  double size_fraction = 0.15;
+  // Turned about the plane's normal from the camera's x axis, so that the
+  // camera sees two of its sides and not one square face.
+  double yaw_deg = 30.0;
 };
 
 // Stands a cube on `fit` (inliers among `points_w`), seen from the reference
 // camera T_w_ref (camera -> world; the newest keyframe, say): its anchor is
 // the per-axis median of the inliers nearest the camera's optical axis,
-// projected onto the plane; its x axis is the camera's x axis in the plane,
-// its up side the camera's side. Nothing if the plane passes through the
+// projected onto the plane; its x axis is the camera's x axis in the plane
+// turned by yaw_deg, its up side the camera's side. Nothing if the plane passes through the
 // camera or has no inliers.
 std::optional<VirtualObject> place_on_plane(const PlaneFit& fit, const std::vector<Eigen::Vector3d>& points_w,
                                             const Eigen::Isometry3d& T_w_ref, const PlacementOptions& options = {});
