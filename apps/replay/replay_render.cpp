@@ -8,15 +8,14 @@
 #include <numbers>
 #include <string>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <spdlog/spdlog.h>
 
 #include "apps/cli_support.hpp"
+#include "apps/replay/render_frame_writer.hpp"
 #include "apps/replay/replay_log.hpp"
 #include "core/map/semantic_classes.hpp"
 #include "core/plot/png_file.hpp"
-#include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
 #include "render/ar/ar_view.hpp"
@@ -68,16 +67,6 @@ double median(std::vector<double> values) {
 
 int even(int n) { return n + (n & 1); }
 
-// A frame PNG, atomically, at zlib's fastest level: the frames are many and
-// large, and plot::save_png's level 9 took most of a rendered frame's time
-// (~100 ms at 1280x480) for files only ~20 % smaller.
-void save_frame_png(const std::filesystem::path& path, const cv::Mat& frame) {
-  write_file_atomically(path, [&](const std::filesystem::path& tmp) {
-    if (!cv::imwrite(tmp.string(), frame, {cv::IMWRITE_PNG_COMPRESSION, 1}))
-      throw Error(path.string() + ": cannot write the PNG");
-  });
-}
-
 }  // namespace
 }  // namespace replay_render_detail
 
@@ -91,6 +80,7 @@ struct ReplayRender::Impl {
   fs::path frames_dir, video_path, sheet_path;
   std::unique_ptr<render::ar::Mp4Writer> video;
   render::ar::FrameSampleSheet sheet;
+  std::unique_ptr<RenderFrameWriter> writer;  // after what it writes into: stops first
 
   std::unordered_map<MapPoint::Id, std::uint32_t> found_before;
   std::vector<Eigen::Vector3d> trajectory_w;
@@ -116,6 +106,7 @@ struct ReplayRender::Impl {
     require_writable_output(sheet_path);
     require_writable_output(frames_dir / "ar_000000.png");
     video = std::make_unique<render::ar::Mp4Writer>(video_path, options.video_fps, frame_size);
+    writer = std::make_unique<RenderFrameWriter>(*video, sheet);
   }
 
   // Places the object once, on the dominant plane of the map as it is when
@@ -252,11 +243,10 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
 
   char name[32];
   std::snprintf(name, sizeof name, "ar_%06zu.png", frame_number);
-  replay_render_detail::save_frame_png(m.frames_dir / name, frame);
-  m.video->write(frame);
-  m.sheet.offer(caption, frame);
-  ++m.rendered;
+  // Drawing time only: the writer thread encodes and writes meanwhile.
   m.render_ms.push_back(stopwatch.elapsed_ms());
+  m.writer->write(m.frames_dir / name, caption, std::move(frame));
+  ++m.rendered;
 }
 
 std::string ReplayRender::video_codec() const {
@@ -265,6 +255,7 @@ std::string ReplayRender::video_codec() const {
 
 Json ReplayRender::finish(double replay_fps) {
   Impl& m = *impl_;
+  m.writer->finish();
   m.video->finish();
   if (!m.sheet.empty()) plot::save_png(m.sheet_path, m.sheet.image());
   Json out = Json::object();

@@ -4,7 +4,8 @@
 // tracking results are the same with and without it). Each rendered frame is
 // the AR view (render/ar/ar_view.hpp: the image, the map points the tracker
 // found in it, the virtual object on the map's dominant plane) beside the
-// map view from a camera following above and behind. Written as
+// map view from a camera following above and behind. Written (on a writer
+// thread with a bounded queue: render_frame_writer.hpp) as
 // DIR/frames/ar_NNNNNN.png, DIR/augmented.mp4 and DIR/contact_sheet.png.
 //
 // "Found in this frame" is read without touching the tracker: every search
