@@ -337,14 +337,20 @@ struct ArView::Impl {
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, data.cols, data.rows, 0, GL_BGR, GL_UNSIGNED_BYTE, data.data);
   }
 
-  std::size_t draw_points(const std::vector<ArPoint>& points, const Eigen::Isometry3d& T_c_w) {
+  // The points in front of the camera and not hidden by the object (which
+  // stands in front of the map's surfaces: a point behind it would otherwise
+  // show through it).
+  std::size_t draw_points(const std::vector<ArPoint>& points, const Eigen::Isometry3d& T_c_w,
+                          const std::optional<VirtualObject>& object) {
     using ar_view_detail::PointGpuVertex;
     std::vector<PointGpuVertex> vertices;
     vertices.reserve(points.size());
     const double margin = style.point_size;  // dots partly inside still show
+    const Eigen::Vector3d eye_w = T_c_w.inverse().translation();
     for (const ArPoint& point : points) {
       const Eigen::Vector3d p_c = T_c_w * point.p_w;
       if (p_c.z() <= 0.0) continue;
+      if (object && hides(*object, eye_w, point.p_w)) continue;
       const Eigen::Vector2d px = camera.project(p_c);
       if (!(px.x() > -margin && px.y() > -margin && px.x() < camera.width() - 1 + margin &&
             px.y() < camera.height() - 1 + margin))
@@ -388,7 +394,7 @@ struct ArView::Impl {
     gl.BindVertexArray(empty_vao);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 
-    stats.points_drawn = T_c_w ? draw_points(content.points, *T_c_w) : 0;
+    stats.points_drawn = T_c_w ? draw_points(content.points, *T_c_w, content.object) : 0;
 
     cv::Mat image(camera.height(), camera.width(), CV_8UC3);
     gl.ReadBuffer(GL_COLOR_ATTACHMENT0);

@@ -2,7 +2,8 @@
 // The augmented view, off-screen (OSMesa): a camera image with, drawn over
 // it through the same camera, the virtual object (a lit, checkered cube
 // anchored in the world) and the map points measured in the frame as round
-// dots, plus a legend; CV_8UC3 BGR at the camera's resolution.
+// dots (those the object hides left out), plus a legend; CV_8UC3 BGR at the
+// camera's resolution.
 //
 // Geometry is the camera model's exactly. Points: their pixel is
 // Camera::project() on the CPU (distortion included) and the dot is centred
@@ -54,7 +55,7 @@ struct ArViewStyle {
 
 // What a render drew (for the report and tests).
 struct ArFrameStats {
-  std::size_t points_drawn = 0;  // in front of the camera and inside the image
+  std::size_t points_drawn = 0;  // in front of the camera, inside the image, not behind the object
   bool object_drawn = false;     // the object was rasterised (it may still be off-screen)
 };
 

@@ -60,6 +60,30 @@ std::vector<VirtualObject::FacePoint> VirtualObject::checker_corners_w() const {
   return out;
 }
 
+bool hides(const VirtualObject& object, const Eigen::Vector3d& eye_w, const Eigen::Vector3d& p_w) {
+  // Slab test in the object frame, on the segment eye + t (p - eye), t in [0, 1].
+  const Eigen::Isometry3d T_o_w = object.T_w_o.inverse();
+  const Eigen::Vector3d start = T_o_w * eye_w, direction = T_o_w.linear() * (p_w - eye_w);
+  const double h = 0.5 * object.size;
+  const Eigen::Vector3d low(-h, -h, 0.0), high(h, h, object.size);
+  double enter = 0.0, leave = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::abs(direction[axis]) < 1e-300) {
+      if (start[axis] < low[axis] || start[axis] > high[axis]) return false;
+      continue;
+    }
+    double t0 = (low[axis] - start[axis]) / direction[axis], t1 = (high[axis] - start[axis]) / direction[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+    if (enter > leave) return false;
+  }
+  // The segment meets the box; p_w is hidden unless the box starts at p_w
+  // itself (a point on the surface facing the eye). The margin is relative,
+  // for rounding.
+  return enter < 1.0 - 1e-9;
+}
+
 std::vector<ObjectVertex> object_triangles(const VirtualObject& object) {
   std::vector<ObjectVertex> out;
   out.reserve(36);

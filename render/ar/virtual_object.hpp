@@ -35,6 +35,11 @@ struct VirtualObject {
   std::vector<FacePoint> checker_corners_w() const;
 };
 
+// Whether the segment from `eye_w` to `p_w` passes through the cube before
+// it reaches p_w (p_w hidden behind or inside it, seen from eye_w). Points on
+// the cube's surface itself count as visible.
+bool hides(const VirtualObject& object, const Eigen::Vector3d& eye_w, const Eigen::Vector3d& p_w);
+
 // A triangle mesh of the cube for drawing: per vertex the world position,
 // the face's outward normal and the face coordinates (0..1 along each edge).
 struct ObjectVertex {

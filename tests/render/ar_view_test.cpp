@@ -210,6 +210,28 @@ TEST(ArViewAnchoring, TheObjectStaysPutAsTheCameraMoves) {
   EXPECT_LT(worst, 0.5);
 }
 
+TEST(ArView, PointsBehindTheObjectAreNotDrawn) {
+  const Camera camera = cameras()[0].camera;
+  ArView view(camera);
+  ArFrameContent content;
+  content.image = grey_image(camera);
+  content.object = test_cube();
+  content.T_w_c = diagonal_view(*content.object, 2.9, 0.15);
+  const Eigen::Vector3d eye = content.T_w_c->translation();
+  const Eigen::Vector3d centre = content.object->T_w_o * Eigen::Vector3d(0, 0, 0.5);
+  // On the line of sight through the cube's centre: before it, inside it,
+  // just behind it, far behind it.
+  for (const double t : {0.3, 1.0, 1.4, 2.5}) content.points.push_back({eye + t * (centre - eye), cv::Vec3b(0, 0, 255)});
+  // Beside the cube: seen.
+  content.points.push_back({centre + 1.0 * content.T_w_c->linear().col(0), cv::Vec3b(0, 0, 255)});
+  render::ar::ArFrameStats stats;
+  view.render(content, &stats);
+  EXPECT_EQ(stats.points_drawn, 2u);  // the one before it and the one beside it
+  content.object.reset();
+  view.render(content, &stats);
+  EXPECT_EQ(stats.points_drawn, 5u);
+}
+
 TEST(ArView, AFrameWithoutPoseOrMapIsTheImageUntouched) {
   const Camera camera = cameras()[1].camera;
   ArView view(camera);
