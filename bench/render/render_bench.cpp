@@ -10,6 +10,7 @@
 // (image upload, the object, ~300 points, read-back, legend) and with the
 // map view beside it; the street render at the same sizes is its peer in
 // the same run (compare ratios, not absolute times, on a shared machine).
+#include <filesystem>
 #include <memory>
 #include <random>
 #include <vector>
@@ -19,6 +20,7 @@
 
 #include "render/ar/ar_view.hpp"
 #include "render/ar/follow_camera.hpp"
+#include "render/ar/video_writer.hpp"
 #include "render/map_view.hpp"
 #include "render/offscreen_renderer.hpp"
 #include "sequences/synth/camera_path.hpp"
@@ -200,6 +202,43 @@ BENCHMARK(BM_ArOverlayWithMapView)
     ->ArgNames({"width", "height", "distorted"})
     ->Args({640, 480, 0})->Args({1226, 370, 0})
     ->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+
+// What the writer thread of `replay --render` spends per 1280x480 frame
+// (the overlay beside a map view): the PNG at zlib level 1, and the video
+// frame (H.264 where OpenCV's FFmpeg offers it).
+cv::Mat composed_frame() {
+  const Camera camera = demo_scene().camera;
+  const ArBenchFrame frame = ar_bench_frame(camera);
+  render::ar::ArView view(camera);
+  cv::Mat composed(camera.height(), 2 * camera.width(), CV_8UC3, cv::Scalar::all(238));
+  view.render(frame.content).copyTo(composed(cv::Rect(0, 0, camera.width(), camera.height())));
+  return composed;
+}
+
+void BM_EncodeArFramePng(benchmark::State& state) {
+  const cv::Mat frame = composed_frame();
+  std::vector<std::uint8_t> buffer;
+  for (auto _ : state) {
+    cv::imencode(".png", frame, buffer, {cv::IMWRITE_PNG_COMPRESSION, static_cast<int>(state.range(0))});
+    benchmark::DoNotOptimize(buffer.data());
+  }
+  state.counters["bytes"] = static_cast<double>(buffer.size());
+  frames_per_second(state);
+}
+BENCHMARK(BM_EncodeArFramePng)->ArgName("zlib_level")->Arg(1)->Arg(9)->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+
+void BM_EncodeArFrameVideo(benchmark::State& state) {
+  const cv::Mat frame = composed_frame();
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "facadeslam-bench-ar.mp4";
+  {
+    render::ar::Mp4Writer video(path, 30.0, frame.size());
+    static const bool described = (benchmark::AddCustomContext("ar_video_codec", video.fourcc()), true);
+    (void)described;
+    for (auto _ : state) video.write(frame);
+  }  // not finished: the temporary file is removed
+  frames_per_second(state);
+}
+BENCHMARK(BM_EncodeArFrameVideo)->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
