@@ -98,13 +98,6 @@ struct ReplayRender::Impl {
         video_path(options.dir / "augmented.mp4"),
         sheet_path(options.dir / "contact_sheet.png"),
         sheet(options.title + ": augmented view | map view", 12, 3, std::min(480, frame_size.width)) {
-    try {
-      fs::create_directories(frames_dir);
-    } catch (const fs::filesystem_error& e) {
-      throw Error(options.dir.string() + ": cannot create the render folder (" + e.code().message() + ")");
-    }
-    require_writable_output(sheet_path);
-    require_writable_output(frames_dir / "ar_000000.png");
     video = std::make_unique<render::ar::Mp4Writer>(video_path, options.video_fps, frame_size);
     writer = std::make_unique<RenderFrameWriter>(*video, sheet);
   }
@@ -183,6 +176,15 @@ struct ReplayRender::Impl {
 
 ReplayRender::ReplayRender(ReplayRenderOptions options, const Camera& camera) : options_(std::move(options)) {
   if (options_.every == 0) throw Error("--render-every must be at least 1");
+  // The folder first: a bad one fails before any OSMesa context exists.
+  const fs::path frames_dir = options_.dir / "frames";
+  try {
+    fs::create_directories(frames_dir);
+  } catch (const fs::filesystem_error& e) {
+    throw Error(options_.dir.string() + ": cannot create the render folder (" + e.code().message() + ")");
+  }
+  require_writable_output(options_.dir / "contact_sheet.png");
+  require_writable_output(frames_dir / "ar_000000.png");
   impl_ = std::make_unique<Impl>(options_, camera);
 }
 
