@@ -16,6 +16,7 @@
 // One ArView owns one OSMesa context; use it from one thread at a time.
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>

@@ -4,6 +4,7 @@
 // Frames arrive one by one without a known total, so the sample keeps every
 // stride-th frame and doubles the stride when it is full (memory stays
 // bounded on any sequence length).
+#include <cstddef>
 #include <string>
 #include <vector>
 

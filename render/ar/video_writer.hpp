@@ -4,6 +4,7 @@
 // MPEG-4 part 2 ("mp4v"). Written to a temporary file beside the target and
 // renamed into place by finish(), so that an interrupted run never leaves a
 // half-written video under the final name.
+#include <cstddef>
 #include <filesystem>
 #include <memory>
 #include <string>
