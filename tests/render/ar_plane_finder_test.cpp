@@ -6,6 +6,7 @@
 #include <iostream>
 #include <random>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "render/ar/plane_finder.hpp"
