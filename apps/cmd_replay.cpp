@@ -2,8 +2,10 @@
 // folder, a TUM rgb.txt list or a video, and writes the trajectory, the
 // keyframes, the labelled point cloud, the map and a JSON report
 // (replay/replay_outputs.hpp).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include <spdlog/spdlog.h>
@@ -13,9 +15,11 @@
 #include "apps/replay/ground_truth_labels.hpp"
 #include "apps/replay/replay_log.hpp"
 #include "apps/replay/replay_outputs.hpp"
+#include "apps/replay/replay_render.hpp"
 #include "core/camera/camera_yaml.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress.hpp"
+#include "core/util/stopwatch.hpp"
 #include "semantics/evaluation/map_label_accuracy.hpp"
 #include "sequences/open_sequence.hpp"
 #include "slam/system.hpp"
@@ -42,6 +46,8 @@ struct ReplayOptions {
   std::string on_corrupt = "skip";
   std::string semantics;  // on, off, or empty: as the semantics config says
   fs::path model, semantics_config;
+  fs::path render;  // empty: no augmented view
+  std::size_t render_every = 1;
 };
 
 // Semantics are on by default with the shipped model and settings; a config
@@ -80,6 +86,22 @@ int run_replay(ReplayOptions o) {
     o.camera = beside;
   }
   const Camera camera = load_camera(o.camera);
+  // The render folder is checked (and the video opened) before any frame is
+  // read: a bad folder is a bad command line, found at once.
+  std::unique_ptr<ReplayRender> ar_render;
+  if (!o.render.empty()) {
+    try {
+      // The video plays the rendered frames at 30 frames/s, slower when
+      // frames are skipped, so that the motion keeps about its pace.
+      const double video_fps = std::clamp(30.0 / static_cast<double>(o.render_every), 5.0, 30.0);
+      ar_render = std::make_unique<ReplayRender>(
+          ReplayRenderOptions{o.render, o.render_every, video_fps,
+                              "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string()},
+          camera);
+    } catch (const Error& e) {
+      throw CLI::ValidationError("--render", e.what());
+    }
+  }
   SlamOptions slam = o.config.empty() ? SlamOptions{} : load_slam_options(o.config);
   slam.synchronous = o.sync;
   slam.semantics = semantics_options(o);
@@ -104,21 +126,33 @@ int run_replay(ReplayOptions o) {
 
   ReplayLog log;
   Progress progress("replay", source->size_hint());
+  const Stopwatch replay_time;
   while (auto frame = source->next()) {
     if (frame->colour.cols != camera.width() || frame->colour.rows != camera.height())
       fail_file(frame->source, "image is " + std::to_string(frame->colour.cols) + "x" + std::to_string(frame->colour.rows) +
                                    " but the camera (" + o.camera.string() + ") is " + std::to_string(camera.width()) +
                                    "x" + std::to_string(camera.height()));
     if (gt_labels) gt_labels->add(*frame);
+    // The renderer gets its own copy of the image and reads the map only
+    // between frames: the System's work is the same with or without it.
+    const std::size_t frame_number = log.frames;
+    cv::Mat image_to_render;
+    if (ar_render && ar_render->wants(frame_number)) {
+      image_to_render = frame->colour.clone();
+      ar_render->before_tracking(frame_number, system);
+    }
     const FrameReport r = system.process(std::move(*frame));
     log.add(r, system.initialised());
+    if (ar_render) ar_render->after_tracking(frame_number, r, image_to_render, system);
     progress.update(log.frames, to_string(r.status));
   }
   progress.finish();
   if (log.frames == 0) throw Error(o.sequence.string() + ": the sequence has no frames");
   system.finish();
 
-  ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(), {}};
+  const double replay_fps = static_cast<double>(log.frames) / std::max(1e-9, replay_time.elapsed_s());
+  ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(), {}, {}};
+  if (ar_render) info.render = ar_render->finish(replay_fps);
   if (gt_labels && slam.semantics.enabled)
     info.label_accuracy =
         semantics::map_label_accuracy(system.map(), [&](std::size_t index) { return gt_labels->class_ids(index); });
@@ -136,6 +170,10 @@ int run_replay(ReplayOptions o) {
     if (online_percent) std::printf(" (as tracked: %.3f %%)", online_percent->as_double());
     std::printf("\n");
   }
+  if (const Json* r = outputs.report.find("render"); r && ar_render)
+    std::printf("replay: rendered %.0f frames (%.0f without overlay) at %.1f frames/s -> %s (video: %s)\n",
+                r->find("frames_rendered")->as_double(), r->find("frames_without_overlay")->as_double(), replay_fps,
+                o.render.string().c_str(), ar_render->video_codec().c_str());
   if (info.label_accuracy && info.label_accuracy->accuracy())
     std::printf("replay: label accuracy %.3f over %zu labelled points\n", *info.label_accuracy->accuracy(),
                 info.label_accuracy->evaluated);
@@ -182,6 +220,12 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--semantics-config", options->semantics_config,
                   "Semantic settings YAML: model, class prior, unreliable classes (default: configs/semantics.yaml)");
   cmd->add_option("--model", options->model, "Forest model for the semantic worker (default: models/default.fsmodel)");
+  auto* render_option = cmd->add_option("--render", options->render,
+                                 "Render the augmented view (AR overlay + map view) of the tracked frames into this "
+                                 "folder: PNG frames, augmented.mp4, contact_sheet.png");
+  cmd->add_option("--render-every", options->render_every, "With --render: render every Nth frame (default 1)")
+      ->check(CLI::PositiveNumber)
+      ->needs(render_option);
   cmd->callback([options] {
     const int code = run_replay(*options);
     if (code != kExitOk) throw CLI::RuntimeError(code);

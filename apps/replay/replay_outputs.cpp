@@ -142,6 +142,7 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["timings"] = timings;
   report["mapping"] = mapping_summary(stats);
   report["semantics"] = semantics_summary(info, log, system);
+  if (info.render) report["render"] = *info.render;
   if (!paths.gt.empty() && trajectory.size() >= 3) {
     // trajectory.txt's figures at the top level (the names report.json has
     // always had), the online trajectory's under the same names in ate_online.

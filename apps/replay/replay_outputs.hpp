@@ -29,6 +29,8 @@ struct ReplayRunInfo {
   std::filesystem::path model;  // empty: semantics off
   // Against ground-truth label images, when the sequence has them.
   std::optional<semantics::MapLabelAccuracy> label_accuracy;
+  // With --render: what was rendered (apps/replay/replay_render.hpp).
+  std::optional<Json> render;
 };
 
 struct ReplayOutputs {

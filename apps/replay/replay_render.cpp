@@ -1,0 +1,286 @@
+#include "apps/replay/replay_render.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include <opencv2/imgproc.hpp>
+#include <spdlog/spdlog.h>
+
+#include "apps/cli_support.hpp"
+#include "apps/replay/render_frame_writer.hpp"
+#include "apps/replay/replay_log.hpp"
+#include "core/map/semantic_classes.hpp"
+#include "core/plot/png_file.hpp"
+#include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
+#include "render/ar/ar_view.hpp"
+#include "render/ar/contact_sheet.hpp"
+#include "render/ar/follow_camera.hpp"
+#include "render/ar/plane_finder.hpp"
+#include "render/ar/video_writer.hpp"
+#include "render/ar/virtual_object.hpp"
+#include "render/map_view.hpp"
+#include "render/map_view_framing.hpp"
+
+namespace facadeslam::apps {
+// Named, so that a unity build cannot clash with other files' helpers.
+namespace replay_render_detail {
+namespace {
+
+// PTAM's colours for the pyramid level a point's patch comes from (points
+// without a class yet): red, yellow, green, blue from fine to coarse.
+const std::array<cv::Vec3b, 4> kLevelBgr{{{0, 0, 255}, {0, 230, 255}, {0, 200, 0}, {255, 120, 0}}};
+
+// Before a plane is looked for: a map this small is mostly the two
+// initial keyframes' points, whose plane may be a poor guess.
+constexpr std::size_t kMinPointsForPlane = 80;
+constexpr std::size_t kMinKeyframesForPlane = 3;
+
+cv::Vec3b class_bgr(const SemanticClass& c) { return {c.b, c.g, c.r}; }
+
+struct PointColour {
+  cv::Vec3b bgr;
+  std::string legend;
+};
+
+PointColour point_colour(const MapPoint& point) {
+  const SemanticLabel label = point.label();
+  if (label.label != kUnlabelled) {
+    const SemanticClass& c = semantic_class(label.label);
+    return {class_bgr(c), std::string(c.name)};
+  }
+  const int level = std::clamp(point.source().level, 0, static_cast<int>(kLevelBgr.size()) - 1);
+  return {kLevelBgr[static_cast<std::size_t>(level)], "level " + std::to_string(level)};
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+int even(int n) { return n + (n & 1); }
+
+}  // namespace
+}  // namespace replay_render_detail
+
+namespace fs = std::filesystem;
+
+struct ReplayRender::Impl {
+  Camera camera;
+  render::ar::ArView ar_view;
+  render::MapView map_view;
+  cv::Size map_view_size, frame_size;
+  fs::path frames_dir, video_path, sheet_path;
+  std::unique_ptr<render::ar::Mp4Writer> video;
+  render::ar::FrameSampleSheet sheet;
+  std::unique_ptr<RenderFrameWriter> writer;  // after what it writes into: stops first
+
+  std::unordered_map<MapPoint::Id, std::uint32_t> found_before;
+  std::vector<Eigen::Vector3d> trajectory_w;
+  std::optional<render::ar::VirtualObject> object;
+  Json plane;  // null until the object is placed
+  std::size_t rendered = 0, without_overlay = 0;
+  std::vector<double> render_ms;
+
+  Impl(const ReplayRenderOptions& options, const Camera& c)
+      : camera(c),
+        ar_view(c),
+        map_view_size(replay_render_detail::even(c.height() * 4 / 3), c.height()),
+        frame_size(replay_render_detail::even(c.width() + map_view_size.width), replay_render_detail::even(c.height())),
+        frames_dir(options.dir / "frames"),
+        video_path(options.dir / "augmented.mp4"),
+        sheet_path(options.dir / "contact_sheet.png"),
+        sheet(options.title + ": augmented view | map view", 12, 3, std::min(480, frame_size.width)) {
+    video = std::make_unique<render::ar::Mp4Writer>(video_path, options.video_fps, frame_size);
+    writer = std::make_unique<RenderFrameWriter>(*video, sheet);
+  }
+
+  // Places the object once, on the dominant plane of the map as it is when
+  // it first has enough points; from then on it stays where it is.
+  void place_object(const std::vector<PointSnapshot>& points, const std::vector<KeyFrameSnapshot>& keyframes,
+                    std::size_t frame_number) {
+    if (object || points.size() < replay_render_detail::kMinPointsForPlane ||
+        keyframes.size() < replay_render_detail::kMinKeyframesForPlane)
+      return;
+    std::vector<Eigen::Vector3d> points_w;
+    points_w.reserve(points.size());
+    for (const PointSnapshot& p : points) points_w.push_back(p.geometry.p_w);
+    const auto fit = render::ar::find_dominant_plane(points_w);
+    if (!fit) return;
+    // Seen from the newest keyframe: the object appears near the middle of
+    // the view it is placed in.
+    object = render::ar::place_on_plane(*fit, points_w, keyframes.back().T_c_w.inverse().isometry());
+    if (!object) return;
+    std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+    for (const KeyFrameSnapshot& kf : keyframes) keyframes_T_c_w.push_back(kf.T_c_w.isometry());
+    const render::ViewAxes axes = render::view_axes_from_cameras(keyframes_T_c_w);
+    // Ground when the plane's normal is within 45 degrees of the map's up.
+    const bool ground = std::abs(fit->plane.normal_w.dot(axes.up_w)) > std::cos(std::numbers::pi / 4);
+    plane = Json::object();
+    plane["kind"] = ground ? "ground" : "facade";
+    plane["inliers"] = fit->inliers.size();
+    plane["points"] = points.size();
+    plane["placed_at_frame"] = frame_number;
+    Json normal = Json::array();
+    for (int i = 0; i < 3; ++i) normal.push_back(object->T_w_o.linear()(i, 2));
+    plane["normal_w"] = normal;
+    plane["object_size"] = object->size;
+    spdlog::info("render: virtual object placed on the {} plane ({} of {} points) at frame {}",
+                 ground ? "ground" : "facade", fit->inliers.size(), points.size(), frame_number);
+  }
+
+  cv::Mat draw_map_view(const std::vector<PointSnapshot>& points, const std::vector<KeyFrameSnapshot>& keyframes,
+                        const std::optional<Eigen::Isometry3d>& T_w_c) {
+    render::MapViewContent content;
+    content.points_w.reserve(points.size());
+    content.colours_bgr.reserve(points.size());
+    for (const PointSnapshot& p : points) {
+      content.points_w.push_back(p.geometry.p_w.cast<float>());
+      content.colours_bgr.push_back(replay_render_detail::class_bgr(semantic_class(p.point->label().label)));
+    }
+    std::vector<double> depths;
+    for (const KeyFrameSnapshot& kf : keyframes) {
+      content.keyframes_T_c_w.push_back(kf.T_c_w.isometry());
+      depths.push_back(kf.mean_depth);
+    }
+    content.trajectory_w = trajectory_w;
+    render::MapViewStyle style;
+    content.legend = {{"keyframes (" + std::to_string(keyframes.size()) + ")", style.keyframe_bgr, true},
+                      {"trajectory", style.trajectory_bgr, true}};
+    if (keyframes.empty() || (!T_w_c && trajectory_w.empty())) {
+      cv::Mat empty(map_view_size, CV_8UC3, style.background_bgr);
+      cv::putText(empty, "no map yet", {12, map_view_size.height / 2}, cv::FONT_HERSHEY_SIMPLEX, 0.6,
+                  cv::Scalar::all(90), 1, cv::LINE_AA);
+      return empty;
+    }
+    // Follow the current camera, or the last tracked one while lost.
+    Eigen::Isometry3d follow = T_w_c ? *T_w_c : Eigen::Isometry3d::Identity();
+    if (!T_w_c) follow = keyframes.back().T_c_w.inverse().isometry();
+    const double depth = replay_render_detail::median(depths);
+    const render::MapViewCamera view = render::ar::follow_camera(
+        follow, render::view_axes_from_cameras(content.keyframes_T_c_w), depth, map_view_size.width,
+        map_view_size.height);
+    style.point_size = std::max(2.f, std::round(3.f * map_view_size.height / 480.f));
+    style.frustum_depth = 0.12 * depth;
+    style.trajectory_line_width = 2.f;
+    return map_view.render(content, view, style);
+  }
+};
+
+ReplayRender::ReplayRender(ReplayRenderOptions options, const Camera& camera) : options_(std::move(options)) {
+  if (options_.every == 0) throw Error("--render-every must be at least 1");
+  // The folder first: a bad one fails before any OSMesa context exists.
+  const fs::path frames_dir = options_.dir / "frames";
+  try {
+    fs::create_directories(frames_dir);
+  } catch (const fs::filesystem_error& e) {
+    throw Error(options_.dir.string() + ": cannot create the render folder (" + e.code().message() + ")");
+  }
+  require_writable_output(options_.dir / "contact_sheet.png");
+  require_writable_output(frames_dir / "ar_000000.png");
+  impl_ = std::make_unique<Impl>(options_, camera);
+}
+
+ReplayRender::~ReplayRender() = default;
+
+void ReplayRender::before_tracking(std::size_t frame_number, const System& system) {
+  if (!wants(frame_number)) return;
+  auto& found_before = impl_->found_before;
+  found_before.clear();
+  system.map().read([&](const MapView& view) {
+    for (const auto& [id, point] : view.points()) found_before[id] = point->times_found();
+  });
+}
+
+void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& report, const cv::Mat& image,
+                                  const System& system) {
+  Impl& m = *impl_;
+  if (report.map_reset) {
+    // The map was given up: its world frame and scale go with it, so the
+    // object and the trajectory so far are placed again in the next map.
+    m.object.reset();
+    m.trajectory_w.clear();
+    m.plane = Json();
+  }
+  std::optional<Eigen::Isometry3d> T_w_c;
+  if (report.has_pose) {
+    T_w_c = report.T_c_w.inverse().isometry();
+    m.trajectory_w.push_back(T_w_c->translation());
+  }
+  if (!wants(frame_number)) return;
+  const Stopwatch stopwatch;
+  const std::vector<PointSnapshot> points = system.map().snapshot_points();
+  const std::vector<KeyFrameSnapshot> keyframes = system.map().snapshot_keyframes();
+  if (T_w_c) m.place_object(points, keyframes, frame_number);
+
+  render::ar::ArFrameContent content;
+  content.image = image;
+  content.T_w_c = T_w_c;
+  content.object = m.object;
+  std::map<std::string, cv::Vec3b> legend;
+  if (T_w_c) {
+    for (const PointSnapshot& p : points) {
+      const auto before = m.found_before.find(p.point->id());
+      if (before == m.found_before.end() || p.point->times_found() <= before->second) continue;
+      const replay_render_detail::PointColour colour = replay_render_detail::point_colour(*p.point);
+      content.points.push_back({p.geometry.p_w, colour.bgr});
+      legend.emplace(colour.legend, colour.bgr);
+    }
+  }
+  for (const auto& [text, bgr] : legend) content.legend.push_back({text, bgr, false});
+  render::ar::ArFrameStats stats;
+  cv::Mat ar = m.ar_view.render(content, &stats);
+  const bool overlay = stats.object_drawn || stats.points_drawn > 0;
+  if (!overlay) ++m.without_overlay;
+  const std::string status = std::string(to_string(report.status)) + (T_w_c ? "" : " (no overlay)");
+  const std::string caption = "frame " + std::to_string(frame_number) + "  " + status + "  " +
+                              std::to_string(stats.points_drawn) + " points";
+  cv::putText(ar, caption, {8, ar.rows - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar::all(0), 3, cv::LINE_AA);
+  cv::putText(ar, caption, {8, ar.rows - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar::all(255), 1, cv::LINE_AA);
+
+  cv::Mat frame(m.frame_size, CV_8UC3, cv::Scalar::all(0));
+  ar.copyTo(frame(cv::Rect(0, 0, ar.cols, ar.rows)));
+  const cv::Mat map_picture = m.draw_map_view(points, keyframes, T_w_c);
+  map_picture.copyTo(frame(cv::Rect(ar.cols, 0, map_picture.cols, map_picture.rows)));
+
+  char name[32];
+  std::snprintf(name, sizeof name, "ar_%06zu.png", frame_number);
+  // Drawing time only: the writer thread encodes and writes meanwhile.
+  m.render_ms.push_back(stopwatch.elapsed_ms());
+  m.writer->write(m.frames_dir / name, caption, std::move(frame));
+  ++m.rendered;
+}
+
+std::string ReplayRender::video_codec() const {
+  return impl_->video->fourcc() + " (" + impl_->video->codec_name() + ")";
+}
+
+Json ReplayRender::finish(double replay_fps) {
+  Impl& m = *impl_;
+  m.writer->finish();
+  m.video->finish();
+  if (!m.sheet.empty()) plot::save_png(m.sheet_path, m.sheet.image());
+  Json out = Json::object();
+  out["frames_rendered"] = m.rendered;
+  out["frames_without_overlay"] = m.without_overlay;
+  out["every"] = options_.every;
+  out["frames_dir"] = m.frames_dir.string();
+  out["video"] = m.video_path.string();
+  out["video_codec"] = video_codec();
+  out["contact_sheet"] = m.sheet.empty() ? Json() : Json(m.sheet_path.string());
+  out["frame_size"] = std::to_string(m.frame_size.width) + "x" + std::to_string(m.frame_size.height);
+  out["gl_renderer"] = m.ar_view.gl_renderer();
+  out["plane"] = m.plane;
+  out["render_ms"] = timing_summary(m.render_ms);
+  out["replay_fps"] = replay_fps;
+  return out;
+}
+
+}  // namespace facadeslam::apps
