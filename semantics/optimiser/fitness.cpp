@@ -54,7 +54,8 @@ nlohmann::json to_json(const GenomeEvaluation& e) {
   return {{"valid", e.valid},         {"overall", e.overall},
           {"average", e.average},     {"time_ratio", e.time_ratio},
           {"values", e.values},       {"objective", std::isfinite(e.objective) ? nlohmann::json(e.objective) : nlohmann::json()},
-          {"seconds", e.seconds}};
+          {"seconds", e.seconds},     {"describe_seconds", e.describe_seconds},
+          {"train_seconds", e.train_seconds}, {"validate_seconds", e.validate_seconds}};
 }
 
 GenomeEvaluation evaluation_from_json(const nlohmann::json& j) {
@@ -66,6 +67,9 @@ GenomeEvaluation evaluation_from_json(const nlohmann::json& j) {
   e.values = j.at("values").get<int>();
   e.objective = j.at("objective").is_null() ? -std::numeric_limits<double>::infinity() : j.at("objective").get<double>();
   e.seconds = j.at("seconds").get<double>();
+  e.describe_seconds = j.value("describe_seconds", 0.0);
+  e.train_seconds = j.value("train_seconds", 0.0);
+  e.validate_seconds = j.value("validate_seconds", 0.0);
   return e;
 }
 
@@ -95,28 +99,40 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
   set_options.balance = true;  // the rare classes (door, sky) must count in the average rate
   set_options.max_samples = options_.max_samples;
   set_options.seed = seed_;
+  Stopwatch phase;
   const TrainingSet set = build_training_set(split_.train, set_options, *descriptor);
+  e.describe_seconds = phase.elapsed_s();
+  phase.restart();
   ForestParams params = forest_params(genome.decode());
   if (options_.max_trees > 0) params.trees = std::min(params.trees, options_.max_trees);
   if (options_.max_depth > 0) params.max_depth = std::min(params.max_depth, options_.max_depth);
   params.seed = seed_;
   const RandomForest forest = RandomForest::train(set.samples, set.labels, params);
+  e.train_seconds = phase.elapsed_s();
+  phase.restart();
 
   ConfusionMatrix confusion(static_cast<int>(kSemanticClasses.size()));
   double descriptor_s = 0.0, sift_s = 0.0;
+  std::size_t timed = 0;
   for (const LabelledImage& image : split_.validation) {
     const LoadedLabelledImage loaded = load_labelled_image(image);
     const LabelledKeypoints kps = labelled_keypoints(loaded.label, options_.step);
     if (kps.points.empty()) continue;
     Stopwatch stage;
     const cv::Mat rows = descriptor->compute(loaded.bgr, kps.points);
-    descriptor_s += stage.elapsed_s();
-    stage.restart();
-    const cv::Mat sift_rows = sift->compute(loaded.bgr, kps.points);
-    sift_s += stage.elapsed_s();
+    const double image_s = stage.elapsed_s();
+    if (timed < options_.timing_images) {
+      // The ratio on the first images, the genome and SIFT back to back.
+      ++timed;
+      descriptor_s += image_s;
+      stage.restart();
+      const cv::Mat sift_rows = sift->compute(loaded.bgr, kps.points);
+      sift_s += stage.elapsed_s();
+    }
     const std::vector<int> predicted = forest.predict(rows);
     for (std::size_t k = 0; k < predicted.size(); ++k) confusion.add(kps.classes[k], predicted[k]);
   }
+  e.validate_seconds = phase.elapsed_s();
   e.valid = confusion.total() > 0;
   e.overall = e.valid ? confusion.overall_recognition_rate() : 0.0;
   e.average = e.valid ? confusion.average_recognition_rate() : 0.0;

@@ -35,7 +35,10 @@ struct GenomeEvaluation {
   double time_ratio = 0;       // extraction time / cv::SIFT's on the same keypoints
   int values = 0;              // descriptor length
   double objective = 0;        // FitnessWeights applied (-infinity when invalid)
-  double seconds = 0;          // the evaluation's wall time
+  double seconds = 0;          // the evaluation's wall time, of which:
+  double describe_seconds = 0;  // reading the training images and describing the sample
+  double train_seconds = 0;     // training the forest
+  double validate_seconds = 0;  // describing and classifying the validation keypoints, SIFT timing included
 };
 nlohmann::json to_json(const GenomeEvaluation& e);
 GenomeEvaluation evaluation_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception

@@ -54,6 +54,9 @@ struct GaOptions {
   // Images and keypoints per fitness evaluation (0: all).
   std::size_t max_train_images = 0, max_validation_images = 0, max_samples = 0;
   int step = 9;  // grid step of the keypoints
+  // Validation images on which the extraction time is measured against
+  // cv::SIFT's (SIFT costs more than the rest of an evaluation on all).
+  std::size_t timing_images = 8;
   // Forest size cap during the search (0: the genome's own), to keep an
   // evaluation affordable; the winner's model is trained at its own size.
   int max_trees = 0, max_depth = 0;

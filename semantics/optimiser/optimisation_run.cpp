@@ -54,6 +54,7 @@ nlohmann::json settings_json(const OptimiseOptions& o) {
           {"max_validation_images", g.max_validation_images},
           {"max_samples", g.max_samples},
           {"step", g.step},
+          {"timing_images", g.timing_images},
           {"max_trees", g.max_trees},
           {"max_depth", g.max_depth},
           {"fitness",
@@ -209,7 +210,12 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
     const std::vector<GenomeEvaluation> evaluations = evaluate(fresh);
     result.evaluation_seconds += evaluating.elapsed_s();
     result.evaluations += fresh.size();
-    for (std::size_t i = 0; i < fresh.size(); ++i) cache[fresh[i].to_string()] = evaluations[i];
+    for (std::size_t i = 0; i < fresh.size(); ++i) {
+      cache[fresh[i].to_string()] = evaluations[i];
+      result.describe_seconds += evaluations[i].describe_seconds;
+      result.train_seconds += evaluations[i].train_seconds;
+      result.validate_seconds += evaluations[i].validate_seconds;
+    }
     std::vector<double> objectives;
     for (const Genome& g : ga.population()) objectives.push_back(cache.at(g.to_string()).objective);
     ga.set_objectives(std::move(objectives));
