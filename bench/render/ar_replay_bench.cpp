@@ -3,7 +3,7 @@
 // object once, the overlay and the map view; the PNG and video encoding run
 // on a writer thread and are not in it), next to the same replay without it
 // in the same run: frames per second of the embedded demo (150 frames at
-// 640x480, scripts/make-demo), run from the project root, threaded as the
+// 640x480, scripts/make-demo), threaded as the
 // README's command runs it, semantics off (the shipped model is not the
 // subject).
 #include <memory>
@@ -12,36 +12,21 @@
 
 #include <benchmark/benchmark.h>
 
-#include "core/camera/camera_yaml.hpp"
+#include "bench/bench_sequences.hpp"
 #include "render/ar/ar_view.hpp"
 #include "render/ar/follow_camera.hpp"
 #include "render/ar/plane_finder.hpp"
 #include "render/ar/virtual_object.hpp"
 #include "render/map_view.hpp"
 #include "render/map_view_framing.hpp"
-#include "sequences/open_sequence.hpp"
 #include "slam/system.hpp"
 
 namespace {
 
 using namespace facadeslam;
 
-struct DemoFrames {
-  Camera camera;
-  std::vector<Frame> frames;
-};
-
-const DemoFrames* demo() {
-  static const std::unique_ptr<DemoFrames> frames = []() -> std::unique_ptr<DemoFrames> {
-    const std::filesystem::path folder = "data/demo/sequence";
-    if (!std::filesystem::exists(folder / "rgb.txt")) return nullptr;
-    auto d = std::make_unique<DemoFrames>(DemoFrames{load_camera(folder / "camera.yaml"), {}});
-    auto source = open_sequence(folder / "rgb.txt", SequenceOptions{});
-    while (auto frame = source->next()) d->frames.push_back(std::move(*frame));
-    return d;
-  }();
-  return frames.get();
-}
+using DemoFrames = bench::BenchSequence;
+const DemoFrames* demo() { return bench::demo_sequence(); }
 
 // Draws the frame's augmented view and map view (the drawing of
 // apps/replay/replay_render.cpp, without its files).

@@ -19,7 +19,7 @@
 #include <benchmark/benchmark.h>
 #include <spdlog/spdlog.h>
 
-#include "core/camera/camera_yaml.hpp"
+#include "bench/bench_sequences.hpp"
 #include "core/image/image_pyramid.hpp"
 #include "sequences/open_sequence.hpp"
 #include "slam/system.hpp"
@@ -28,25 +28,8 @@ namespace {
 
 using namespace facadeslam;
 
-struct DemoFrames {
-  Camera camera;
-  std::vector<Frame> frames;
-};
-
-// The demo, read once; nullptr (and the benchmarks skip) when not rendered.
-const DemoFrames* demo() {
-  static const std::unique_ptr<DemoFrames> frames = []() -> std::unique_ptr<DemoFrames> {
-    const char* root = std::getenv("FACADESLAM_SOURCE_DIR");
-    const std::filesystem::path folder =
-        std::filesystem::path(root ? root : FACADESLAM_SOURCE_DIR) / "data" / "demo" / "sequence";
-    if (!std::filesystem::exists(folder / "rgb.txt")) return nullptr;
-    auto d = std::make_unique<DemoFrames>(DemoFrames{load_camera(folder / "camera.yaml"), {}});
-    auto source = open_sequence(folder / "rgb.txt", SequenceOptions{});
-    while (auto frame = source->next()) d->frames.push_back(std::move(*frame));
-    return d;
-  }();
-  return frames.get();
-}
+using DemoFrames = bench::BenchSequence;
+const DemoFrames* demo() { return bench::demo_sequence(); }
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -56,8 +39,7 @@ double median(std::vector<double> v) {
 
 // The shipped semantic settings and model (configs/semantics.yaml).
 SemanticsOptions semantics_on() {
-  const char* root = std::getenv("FACADESLAM_SOURCE_DIR");
-  const std::filesystem::path source = root ? root : FACADESLAM_SOURCE_DIR;
+  const std::filesystem::path source = bench::source_dir();
   SemanticsOptions options = load_semantics_options(source / "configs" / "semantics.yaml");
   options.model = source / "models" / "default.fsmodel";
   options.enabled = true;

@@ -22,45 +22,17 @@
 #include <opencv2/imgproc.hpp>
 #include <spdlog/spdlog.h>
 
-#include "core/camera/camera_yaml.hpp"
+#include "bench/bench_sequences.hpp"
 #include "core/image/image_pyramid.hpp"
-#include "sequences/open_sequence.hpp"
 #include "slam/system.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace facadeslam;
 
-struct Sequence {
-  Camera camera;
-  std::vector<Frame> frames;
-};
-
-fs::path source_dir() {
-  const char* root = std::getenv("FACADESLAM_SOURCE_DIR");
-  return root ? fs::path(root) : fs::path(FACADESLAM_SOURCE_DIR);
-}
-
-std::unique_ptr<Sequence> read_sequence(const fs::path& list, const fs::path& camera) {
-  if (!fs::exists(list) || !fs::exists(camera)) return nullptr;
-  auto s = std::make_unique<Sequence>(Sequence{load_camera(camera), {}});
-  auto source = open_sequence(list, SequenceOptions{});
-  while (auto frame = source->next()) s->frames.push_back(std::move(*frame));
-  return s;
-}
-
-const Sequence* demo() {
-  static const auto s = read_sequence(source_dir() / "data/demo/sequence/rgb.txt",
-                                      source_dir() / "data/demo/sequence/camera.yaml");
-  return s.get();
-}
-
-const Sequence* kitti() {
-  static const auto s = read_sequence(source_dir() / "../shared/data/kitti06-snippet/rgb.txt",
-                                      source_dir() / "../shared/data/kitti06-snippet/camera.yaml");
-  return s.get();
-}
+using Sequence = bench::BenchSequence;
+const Sequence* demo() { return bench::demo_sequence(); }
+const Sequence* kitti() { return bench::kitti_snippet(); }
 
 double percentile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
