@@ -23,6 +23,9 @@ class Progress {
   bool enabled() const { return enabled_; }
 
   static bool terminal_attached();
+  // Whether a bar made now on this thread would draw (terminal, not quiet,
+  // not silenced).
+  static bool drawing_enabled();
 
   // Bars made on this thread while one of these lives stay silent: work
   // spread over worker threads under one overall bar (the optimiser's

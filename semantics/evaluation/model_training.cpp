@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/map/semantic_classes.hpp"
+#include "core/util/elapsed_indicator.hpp"
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
 #include "semantics/forest/fsmodel_format.hpp"
@@ -55,7 +56,10 @@ TrainingRun train_model(const TrainingOptions& options) {
                set.samples.rows, set.samples.cols, params.trees, params.max_depth, params.split_variables);
   TrainingRun run;
   const Stopwatch training;
-  run.model.forest = RandomForest::train(set.samples, set.labels, params);
+  {
+    const ElapsedIndicator ticking("training the forest");  // one OpenCV call: no progress to show but the time
+    run.model.forest = RandomForest::train(set.samples, set.labels, params);
+  }
   run.training_seconds = training.elapsed_s();
   run.model.descriptor = std::string(descriptor->name());
   run.model.genome = options.genome;
