@@ -17,6 +17,7 @@
 #include "apps/replay/replay_outputs.hpp"
 #include "apps/replay/replay_render.hpp"
 #include "core/camera/camera_yaml.hpp"
+#include "core/trajectory/trajectory_io.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress.hpp"
 #include "core/util/stopwatch.hpp"
@@ -86,6 +87,13 @@ int run_replay(ReplayOptions o) {
     o.camera = beside;
   }
   const Camera camera = load_camera(o.camera);
+  // The ground truth and the output locations are checked before any frame
+  // (a run of minutes must not end in "no such file").
+  if (!o.gt.empty() && read_trajectory(o.gt).size() < 2)
+    fail_file(o.gt, "a ground-truth trajectory of at least 2 poses");
+  if (fs::exists(o.out) && !fs::is_directory(o.out)) fail_file(o.out, "an output folder, not a file");
+  require_writable_output(o.out / "report.json");
+  if (!o.save_map.empty()) require_writable_output(o.save_map);
   // The render folder is checked (and the video opened) before any frame is
   // read: a bad folder is a bad command line, found at once.
   std::unique_ptr<ReplayRender> ar_render;
@@ -208,9 +216,10 @@ void add_replay_command(CLI::App& app) {
   cmd->add_flag("--sync", options->sync, "Run the map maker inline: reproducible results");
   cmd->add_option("--save-map", options->save_map, "Where to write the map (default: OUT/map.fslmap)");
   cmd->add_option("--load-map", options->load_map, "Start from a saved map instead of initialising");
-  cmd->add_option("--start", options->start, "Skip this many frames first");
-  cmd->add_option("--stride", options->stride, "Use every Nth frame")->check(CLI::PositiveNumber);
-  cmd->add_option("--limit", options->limit, "Stop after this many frames (0 = all)");
+  // Ranges checked as numbers: a negative count must not wrap round to 2^64 - 5.
+  cmd->add_option("--start", options->start, "Skip this many frames first")->check(CLI::Range(0.0, 1e12));
+  cmd->add_option("--stride", options->stride, "Use every Nth frame")->check(CLI::Range(1.0, 1e9));
+  cmd->add_option("--limit", options->limit, "Stop after this many frames (0 = all)")->check(CLI::Range(0.0, 1e12));
   cmd->add_option("--on-corrupt", options->on_corrupt, "Corrupt frame policy: skip or stop")
       ->check(CLI::IsMember({"skip", "stop"}));
   cmd->add_option("--semantics", options->semantics,

@@ -161,6 +161,30 @@ TEST_F(ReplayCli, TheEmbeddedDemoThreadedTracksWithinHalfAPercent) {
   EXPECT_EQ(test::json_number(report, "frames_lost"), 0.0);
 }
 
+// Issue 20's first rule: a missing ground truth, an output that is a file or
+// cannot be made, and counts out of range fail before any frame is read,
+// with one line, writing nothing.
+TEST_F(ReplayCli, BadGroundTruthOutputsAndCountsFailBeforeAnyFrame) {
+  const fs::path sequence = render_demo("tiny", 3);
+  const std::string replay = "-q replay " + quoted(sequence / "rgb.txt") + " --sync ";
+  const fs::path out = dir_ / "never-written";
+  test::CliResult r = run(replay + "--gt " + quoted(dir_ / "missing.txt") + " --out " + quoted(out));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("missing.txt"));
+  EXPECT_FALSE(fs::exists(out / "trajectory.txt"));
+  { std::ofstream(dir_ / "a-file") << "x"; }
+  r = run(replay + "--out " + quoted(dir_ / "a-file"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("a-file"));
+  for (const char* bad : {"--start -5", "--limit=-1", "--stride 0"}) {
+    r = run(replay + bad + " --out " + quoted(out));
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_LT(r.err.size(), 200u) << bad << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out / "report.json"));
+}
+
 // A frame rate that makes the motion model useless (every 10th frame of the
 // demo: 1/3 s and ~10 cm between frames, views ~3 degrees apart): tracked
 // through by the relocaliser, or lost gracefully, never a crash or a
