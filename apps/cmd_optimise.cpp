@@ -12,6 +12,7 @@
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
 #include "core/util/error.hpp"
+#include "core/util/interrupt.hpp"
 #include "semantics/optimiser/ga_options.hpp"
 #include "semantics/optimiser/optimisation_run.hpp"
 #ifdef FACADESLAM_HAVE_MPI
@@ -31,6 +32,11 @@ struct Options {
 };
 
 void report(const Options& o, const semantics::OptimiseResult& r) {
+  if (r.interrupted) {
+    std::fprintf(stderr, "facadeslam: optimise interrupted after generation %d; --resume continues it\n",
+                 r.generations - 1);
+    throw CLI::RuntimeError(kExitInterrupted);
+  }
   std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n",
               r.generations, r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
   const double busy = r.describe_seconds + r.train_seconds + r.validate_seconds;
@@ -48,22 +54,20 @@ void report(const Options& o, const semantics::OptimiseResult& r) {
 #ifdef FACADESLAM_HAVE_MPI
 // Under mpirun: rank 0 runs the GA and the ranks above it evaluate. A rank
 // that fails ends them all (the others would wait for it forever).
-void run_under_mpi(const Options& o) {
+// Returns rank 0's result (reported once MPI is finalised); nothing on the other ranks.
+std::optional<semantics::OptimiseResult> run_under_mpi(const Options& o) {
   semantics::MpiSession mpi;
-  if (mpi.size() == 1) {
-    report(o, semantics::run_optimisation(o.run));
-    return;
-  }
+  if (mpi.size() == 1) return semantics::run_optimisation(o.run);
   try {
     if (mpi.rank() > 0) {
       const semantics::FitnessEvaluator evaluator(semantics::split_train_list(o.run.dataset, o.run.ga, o.run.seed),
                                                   o.run.ga, o.run.seed);
       semantics::serve_mpi_evaluations(evaluator);
-      return;
+      return std::nullopt;
     }
     const semantics::OptimiseResult r = semantics::run_optimisation(o.run, semantics::mpi_evaluate_batch(mpi.size()));
     semantics::stop_mpi_workers(mpi.size());
-    report(o, r);
+    return r;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "facadeslam: error (MPI rank %d): %s\n", mpi.rank(), e.what());
     std::fflush(stderr);
@@ -83,7 +87,7 @@ void run(Options& o) {
   o.run.train_best_model = !o.no_model;
 #ifdef FACADESLAM_HAVE_MPI
   if (semantics::launched_by_mpi()) {
-    run_under_mpi(o);
+    if (const auto r = run_under_mpi(o)) report(o, *r);
     return;
   }
 #endif

@@ -19,6 +19,7 @@
 #include "core/camera/camera_yaml.hpp"
 #include "core/trajectory/trajectory_io.hpp"
 #include "core/util/error.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
 #include "core/util/stopwatch.hpp"
 #include "semantics/evaluation/map_label_accuracy.hpp"
@@ -135,7 +136,18 @@ int run_replay(ReplayOptions o) {
   ReplayLog log;
   Progress progress("replay", source->size_hint());
   const Stopwatch replay_time;
+  // Ctrl-C / SIGTERM: stop after the current frame, then finish the map
+  // maker's and the worker's queued work and write complete outputs.
+  const InterruptGuard interrupts;
+  bool interrupted = false;
   while (auto frame = source->next()) {
+    if (interrupt_requested()) {
+      interrupted = true;
+      progress.finish();
+      std::fprintf(stderr, "facadeslam: interrupted before frame %zu: finishing the map and writing the outputs "
+                           "(Ctrl-C again to abort)\n", frame->index);
+      break;
+    }
     if (frame->colour.cols != camera.width() || frame->colour.rows != camera.height())
       fail_file(frame->source, "image is " + std::to_string(frame->colour.cols) + "x" + std::to_string(frame->colour.rows) +
                                    " but the camera (" + o.camera.string() + ") is " + std::to_string(camera.width()) +
@@ -160,6 +172,7 @@ int run_replay(ReplayOptions o) {
 
   const double replay_fps = static_cast<double>(log.frames) / std::max(1e-9, replay_time.elapsed_s());
   ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(), {}, {}};
+  info.interrupted = interrupted;
   if (ar_render) info.render = ar_render->finish(replay_fps);
   if (gt_labels && slam.semantics.enabled)
     info.label_accuracy =
@@ -190,6 +203,7 @@ int run_replay(ReplayOptions o) {
                  "facadeslam: the images are grey (%zu of %zu labelling jobs): the semantic model needs colour, "
                  "their points stay unlabelled (--semantics off silences this)\n",
                  stats->grey_keyframes, stats->keyframes);
+  if (interrupted) return kExitInterrupted;
   if (!system.initialised()) {
     std::fprintf(stderr, "facadeslam: the map was never initialised (not enough parallax?); see %s\n",
                  (o.out / "report.json").string().c_str());

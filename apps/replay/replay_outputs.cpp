@@ -125,6 +125,7 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["camera"] = info.camera_file.string();
   report["mode"] = info.synchronous ? "synchronous" : "threaded";
   report["initialised"] = system.initialised();
+  report["interrupted"] = info.interrupted;
   report["frames"] = log.frames;
   report["frames_tracked"] = log.tracked;
   report["frames_lost"] = log.lost;

@@ -31,6 +31,7 @@ struct ReplayRunInfo {
   std::optional<semantics::MapLabelAccuracy> label_accuracy;
   // With --render: what was rendered (apps/replay/replay_render.hpp).
   std::optional<Json> render;
+  bool interrupted = false;  // stopped early by Ctrl-C / SIGTERM: the outputs cover the frames before
 };
 
 struct ReplayOutputs {

@@ -16,6 +16,7 @@
 #include "core/plot/line_plot.hpp"
 #include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
 #include "core/util/stopwatch.hpp"
 #include "semantics/descriptor/genome_io.hpp"
@@ -194,6 +195,9 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
       });
 
   OptimiseResult result;
+  // Ctrl-C / SIGTERM: stop after the generation being evaluated, once its
+  // checkpoint is written (--resume continues from it).
+  const InterruptGuard interrupts;
   Progress progress("optimise", static_cast<std::size_t>(options.ga.generations));
   progress.update(ga.history().size());
   while (!ga.finished()) {
@@ -228,6 +232,12 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
     spdlog::info("optimise: generation {}: best {:.4f} mean {:.4f} worst {:.4f} ({} evaluated, {:.1f} s)",
                  s.generation, s.best, s.mean, s.worst, fresh.size(), evaluating.elapsed_s());
     progress.update(ga.history().size(), "best " + std::to_string(s.best));
+    if (interrupt_requested() && !ga.finished()) {
+      result.interrupted = true;
+      result.generations = static_cast<int>(ga.history().size());
+      result.seconds = total.elapsed_s();
+      return result;
+    }
   }
   progress.finish();
 

@@ -51,6 +51,9 @@ struct OptimiseResult {
   std::size_t evaluations = 0;     // fitness evaluations made in this process
   std::size_t cache_hits = 0;
   double seconds = 0, evaluation_seconds = 0;
+  // Stopped by Ctrl-C / SIGTERM after a generation's checkpoint: no final
+  // outputs; --resume continues.
+  bool interrupted = false;
   // Summed over this process's evaluations (threads overlap: the sums can
   // exceed evaluation_seconds): where an evaluation's time goes.
   double describe_seconds = 0, train_seconds = 0, validate_seconds = 0;
