@@ -34,6 +34,26 @@ void require_writable_output(const std::filesystem::path& path) {
   std::filesystem::remove(probe, ec);
 }
 
+void require_creatable_folder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::path existing = std::filesystem::absolute(folder, ec).lexically_normal();
+  while (!existing.empty() && !std::filesystem::exists(existing, ec) && existing.has_parent_path() &&
+         existing.parent_path() != existing)
+    existing = existing.parent_path();
+  if (!std::filesystem::is_directory(existing, ec))
+    fail_file(folder, existing == std::filesystem::absolute(folder, ec).lexically_normal()
+                          ? "an output folder, but it is a file"
+                          : "an output folder, but " + existing.string() + " is not a folder");
+  // A probe folder made and removed at once: permission bits do not tell
+  // root (or /proc) the truth.
+  std::string name = ".facadeslam-probe-";
+  name.append(std::to_string(::getpid()));
+  const std::filesystem::path probe = existing / name;
+  if (!std::filesystem::create_directory(probe, ec) || ec)
+    fail_file(folder, "an output folder, but nothing can be made in " + existing.string());
+  std::filesystem::remove(probe, ec);
+}
+
 std::pair<int, int> parse_image_size(const std::string& text, const std::string& option) {
   const auto x = text.find('x');
   const auto digits = [](const std::string& s) {

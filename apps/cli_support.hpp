@@ -22,6 +22,11 @@ void require_file(const std::filesystem::path& path, const std::string& what);
 // is removed again). For checks before long runs.
 void require_writable_output(const std::filesystem::path& path);
 
+// The same for an output folder, without creating anything: `folder` is a
+// writable folder, or its nearest existing ancestor is one (the run makes
+// the rest at the end). An Error naming the folder otherwise.
+void require_creatable_folder(const std::filesystem::path& folder);
+
 // "640x480" -> (640, 480), each side in [16, 8192]; an Error naming
 // `option` otherwise.
 std::pair<int, int> parse_image_size(const std::string& text, const std::string& option);

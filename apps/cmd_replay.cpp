@@ -88,13 +88,10 @@ int run_replay(ReplayOptions o) {
     o.camera = beside;
   }
   const Camera camera = load_camera(o.camera);
-  // The ground truth and the output locations are checked before any frame
-  // (a run of minutes must not end in "no such file").
+  // The ground truth is read before any frame (a run of minutes must not
+  // end in "no such file").
   if (!o.gt.empty() && read_trajectory(o.gt).size() < 2)
     fail_file(o.gt, "a ground-truth trajectory of at least 2 poses");
-  if (fs::exists(o.out) && !fs::is_directory(o.out)) fail_file(o.out, "an output folder, not a file");
-  require_writable_output(o.out / "report.json");
-  if (!o.save_map.empty()) require_writable_output(o.save_map);
   // The render folder is checked (and the video opened) before any frame is
   // read: a bad folder is a bad command line, found at once.
   std::unique_ptr<ReplayRender> ar_render;
@@ -126,6 +123,10 @@ int run_replay(ReplayOptions o) {
 
   System system(camera, slam);
   if (!o.load_map.empty()) system.load_map(o.load_map);
+  // The output locations can be made (nothing is created before the end,
+  // so a bad input found later leaves no empty folder behind).
+  require_creatable_folder(o.out);
+  if (!o.save_map.empty()) require_creatable_folder(o.save_map.parent_path().empty() ? "." : o.save_map.parent_path());
 
   std::optional<GroundTruthLabelFiles> gt_labels;
   if (const fs::path folder = find_ground_truth_labels(o.sequence, o.gt_labels); !folder.empty()) {

@@ -35,6 +35,11 @@ cv::Mat BinaryReader::get_mat(const char* what) {
   const auto cols = get<std::int32_t>(what);
   if (rows < 0 || cols < 0 || rows > 100000 || cols > 100000 || CV_MAT_DEPTH(type) > CV_64F || CV_MAT_CN(type) > 4)
     corrupt(std::string("implausible image header for ") + what);
+  // Before allocating: a header may claim more than the file holds.
+  const std::size_t bytes = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols) * CV_ELEM_SIZE(type);
+  if (bytes > remaining())
+    corrupt(std::string(what) + " of " + std::to_string(rows) + "x" + std::to_string(cols) +
+            " is larger than the rest of the file");
   cv::Mat m(rows, cols, type);
   const std::size_t row_bytes = static_cast<std::size_t>(cols) * m.elemSize();
   for (int r = 0; r < rows; ++r) get_bytes(m.ptr(r), row_bytes, what);

@@ -1,6 +1,8 @@
 #include "core/map/map_io.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <fstream>
 #include <tuple>
 #include <sstream>
@@ -41,9 +43,17 @@ void put_pose(BinaryWriter& out, const SE3d& T) {
   for (double v : params) out.put(v);
 }
 
+// A double that must be finite (NaN poses and infinite points would load
+// and fail far from the file otherwise).
+double get_finite(BinaryReader& in, const char* what) {
+  const double v = in.get<double>(what);
+  if (!std::isfinite(v)) in.corrupt(std::string(what) + " is not a finite number");
+  return v;
+}
+
 SE3d get_pose(BinaryReader& in) {
   double params[kSe3ParamSize];
-  for (double& v : params) v = in.get<double>("keyframe pose");
+  for (double& v : params) v = get_finite(in, "keyframe pose");
   return se3_from_params(params);
 }
 
@@ -53,7 +63,7 @@ void put_vec(BinaryWriter& out, const Eigen::Vector3d& v) {
 
 Eigen::Vector3d get_vec(BinaryReader& in, const char* what) {
   Eigen::Vector3d v;
-  for (int i = 0; i < 3; ++i) v[i] = in.get<double>(what);
+  for (int i = 0; i < 3; ++i) v[i] = get_finite(in, what);
   return v;
 }
 
@@ -250,11 +260,13 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   const auto n_kf = in.get<std::uint32_t>("keyframe count");
   for (std::uint32_t k = 0; k < n_kf; ++k) {
     const auto id = in.get<std::uint64_t>("keyframe id");
+    if (pyramids.count(id)) in.corrupt("keyframe id " + std::to_string(id) + " appears twice");
     const auto frame_index = in.get<std::uint64_t>("keyframe frame index");
-    const double timestamp = in.get<double>("keyframe timestamp");
+    const double timestamp = get_finite(in, "keyframe timestamp");
     const SE3d T_c_w = get_pose(in);
-    const double mean_depth = in.get<double>("depth stats");
-    const double depth_sigma = in.get<double>("depth stats");
+    const double mean_depth = get_finite(in, "keyframe depth stats");
+    const double depth_sigma = get_finite(in, "keyframe depth stats");
+    if (mean_depth <= 0.0 || depth_sigma < 0.0) in.corrupt("keyframe " + std::to_string(id) + " depth stats out of range");
     auto pyramid = get_pyramid(in);
     cv::Mat colour = get_colour(in);
     const auto n_meas = in.get<std::uint32_t>("measurement count");
@@ -264,10 +276,14 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
       const auto point_id = in.get<std::uint64_t>("measurement");
       Measurement m;
       m.level = in.get<std::int32_t>("measurement");
-      m.pixel.x() = in.get<double>("measurement");
-      m.pixel.y() = in.get<double>("measurement");
+      if (m.level < 0 || m.level >= kPyramidLevels)
+        in.corrupt("measurement level " + std::to_string(m.level) + " in keyframe " + std::to_string(id) +
+                   " (expected 0.." + std::to_string(kPyramidLevels - 1) + ")");
+      m.pixel.x() = get_finite(in, "measurement pixel");
+      m.pixel.y() = get_finite(in, "measurement pixel");
       m.from_source = in.get<std::uint8_t>("measurement") != 0;
-      measurements.emplace(point_id, m);
+      if (!measurements.emplace(point_id, m).second)
+        in.corrupt("keyframe " + std::to_string(id) + " measures point " + std::to_string(point_id) + " twice");
     }
     auto kf = std::make_shared<KeyFrame>(
         id, Frame{static_cast<std::size_t>(frame_index), timestamp, colour, {}, pyramid}, T_c_w, std::move(measurements));
@@ -277,14 +293,16 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   }
 
   std::vector<std::shared_ptr<MapPoint>> points, bad;
+  std::set<MapPoint::Id> point_ids;
   const auto n_points = in.get<std::uint32_t>("point count");
   for (std::uint32_t i = 0; i < n_points; ++i) {
     const auto id = in.get<std::uint64_t>("point id");
+    if (!point_ids.insert(id).second) in.corrupt("point id " + std::to_string(id) + " appears twice");
     PatchSource source;
     source.keyframe_id = in.get<std::uint64_t>("point source");
     source.level = in.get<std::int32_t>("point source");
-    source.pixel_level0.x() = in.get<double>("point source");
-    source.pixel_level0.y() = in.get<double>("point source");
+    source.pixel_level0.x() = get_finite(in, "point source pixel");
+    source.pixel_level0.y() = get_finite(in, "point source pixel");
     const auto it = pyramids.find(source.keyframe_id);
     if (it == pyramids.end()) in.corrupt("point " + std::to_string(id) + " refers to a missing keyframe");
     if (source.level < 0 || source.level >= kPyramidLevels) in.corrupt("point level out of range");
@@ -300,6 +318,16 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     points.push_back(std::move(point));
   }
   if (in.remaining() != 8) in.corrupt("unexpected data after the points");
+  for (const auto& kf : keyframes)
+    for (const auto& [point_id, m] : kf->measurements())
+      if (!point_ids.count(point_id))
+        in.corrupt("keyframe " + std::to_string(kf->id()) + " measures point " + std::to_string(point_id) +
+                   ", which the map does not have");
+  // Ids handed out after loading must not repeat the loaded ones.
+  for (const auto& kf : keyframes)
+    if (kf->id() >= next_kf) in.corrupt("keyframe id " + std::to_string(kf->id()) + " is not below the id counter");
+  for (const MapPoint::Id id : point_ids)
+    if (id >= next_point) in.corrupt("point id " + std::to_string(id) + " is not below the id counter");
 
   map.add(keyframes, points);
   map.update([&](MapEditor& edit) {

@@ -1,6 +1,8 @@
 #include "core/map/map_io.hpp"
 
 #include <fstream>
+#include <functional>
+#include <limits>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -155,6 +157,45 @@ std::string as_version2(const std::string& v3, const std::vector<std::shared_ptr
   const std::uint64_t checksum = fnv1a64(v2.data(), v2.size());
   v2.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
   return v2;
+}
+
+// A hostile file with a valid checksum (issue 20): the loader checks what
+// the data means, naming the file and the field. Point records are the
+// file's last bytes before the checksum (see as_version2).
+std::string with_checksum(std::string body) {
+  const std::uint64_t checksum = fnv1a64(body.data(), body.size());
+  body.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
+  return body;
+}
+
+TEST_F(MapIo, HostileValuesWithAValidChecksumAreRejectedNamingTheField) {
+  constexpr std::size_t kHead = 8 + 8 + 4 + 2 * 8 + 12 * 8, kRecord = kHead + sizeof(ClassVotes) + 1;
+  const std::string good = read_file(file);
+  const std::size_t body = good.size() - 8, first = body - map.point_count() * kRecord;
+  const auto load_edited = [&](const std::string& name, const std::function<void(std::string&)>& edit) {
+    std::string data = good.substr(0, body);
+    edit(data);
+    write_file(dir / name, with_checksum(data));
+    Map loaded;
+    return error_of([&] { load_map(dir / name, loaded); });
+  };
+  // Point 1 takes point 0's id.
+  EXPECT_THAT(load_edited("dup.fslmap", [&](std::string& d) { d.replace(first + kRecord, 8, d.substr(first, 8)); }),
+              AllOf(HasSubstr("dup.fslmap"), HasSubstr("appears twice")));
+  // Point 0's position is NaN.
+  EXPECT_THAT(load_edited("nan.fslmap",
+                          [&](std::string& d) {
+                            const double nan = std::numeric_limits<double>::quiet_NaN();
+                            d.replace(first + 36, 8, std::string(reinterpret_cast<const char*>(&nan), 8));
+                          }),
+              AllOf(HasSubstr("nan.fslmap"), HasSubstr("point geometry is not a finite number")));
+  // Point 0's source level 99.
+  EXPECT_THAT(load_edited("level.fslmap",
+                          [&](std::string& d) {
+                            const std::int32_t level = 99;
+                            d.replace(first + 16, 4, std::string(reinterpret_cast<const char*>(&level), 4));
+                          }),
+              AllOf(HasSubstr("level.fslmap"), HasSubstr("level out of range")));
 }
 
 TEST_F(MapIo, Version2MapsLoadWithTheirLabels) {
