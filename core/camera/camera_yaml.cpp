@@ -71,8 +71,10 @@ Camera load_camera(const std::filesystem::path& path) {
   const std::string model = node.get_choice("model", {"pinhole", "atan"});
   const int width = node.get_int("width", Range::closed(16, 20000));
   const int height = node.get_int("height", Range::closed(16, 20000));
-  const double fx = node.get_double("fx", Range::positive());
-  const double fy = node.get_double("fy", Range::positive());
+  // Focal lengths in pixels for fields of view between ~170 and ~0.1
+  // degrees: 0.001 or 1e12 is a typo (or PTAM's image-normalised values).
+  const double fx = node.get_double("fx", Range::closed(0.05 * width, 500.0 * width));
+  const double fy = node.get_double("fy", Range::closed(0.05 * height, 500.0 * height));
   const double cx = node.get_double("cx", Range::closed(-width, 2.0 * width));
   const double cy = node.get_double("cy", Range::closed(-height, 2.0 * height));
 

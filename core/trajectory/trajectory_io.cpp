@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include <Eigen/LU>
+#include <spdlog/spdlog.h>
 #include <Eigen/SVD>
 
 #include "core/util/atomic_write.hpp"
@@ -131,11 +132,24 @@ Eigen::Isometry3d kitti_pose(const std::filesystem::path& path, const WordLine& 
 Trajectory read_tum(const std::filesystem::path& path, const std::vector<WordLine>& lines) {
   Trajectory trajectory;
   trajectory.reserve(lines.size());
+  std::size_t duplicates = 0;
   for (const auto& line : lines) {
     auto pose = tum_pose(path, line);
-    if (!trajectory.empty()) require_non_decreasing(path, line.line_number, trajectory.back().timestamp, pose.timestamp);
+    if (!trajectory.empty()) {
+      require_non_decreasing(path, line.line_number, trajectory.back().timestamp, pose.timestamp);
+      // A line repeated word for word would count its pose twice in every
+      // figure: kept once.
+      if (pose.timestamp == trajectory.back().timestamp && pose.T_w_c.isApprox(trajectory.back().T_w_c, 0.0)) {
+        ++duplicates;
+        continue;
+      }
+    }
     trajectory.push_back(pose);
   }
+  if (trajectory.size() >= 2 && trajectory.front().timestamp == trajectory.back().timestamp)
+    fail_file(path, "all " + std::to_string(trajectory.size()) +
+                        " timestamps are equal (expected timestamps that advance, in seconds)");
+  if (duplicates) spdlog::warn("{}: {} repeated line(s) read once", path.string(), duplicates);
   return trajectory;
 }
 

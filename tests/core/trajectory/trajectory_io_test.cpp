@@ -118,6 +118,21 @@ TEST_F(TrajectoryIoBadInput, OnlyComments) {
   EXPECT_THAT(read_error("# timestamp tx ty tz qx qy qz qw\n\n"), HasSubstr("no poses"));
 }
 
+// Issue 20: no ATE from a file whose time stands still, and a line
+// repeated word for word counts once.
+TEST_F(TrajectoryIoBadInput, AllEqualTimestampsAreRejected) {
+  EXPECT_THAT(read_error("5 0 0 0 0 0 0 1\n5 1 0 0 0 0 0 1\n5 2 0 0 0 0 0 1\n"),
+              AllOf(StartsWith(file() + ": "), HasSubstr("all 3 timestamps are equal")));
+}
+
+TEST_F(TrajectoryIoBadInput, ARepeatedLineIsReadOnce) {
+  test::write_text(dir_ / "t.txt", "1 0 0 0 0 0 0 1\n2 1 0 0 0 0 0 1\n2 1 0 0 0 0 0 1\n3 2 0 0 0 0 0 1\n");
+  EXPECT_EQ(read_trajectory(dir_ / "t.txt").size(), 3u);
+  // Equal stamps with different poses stay (TUM ground truth rounds to 0.1 ms).
+  test::write_text(dir_ / "t.txt", "1 0 0 0 0 0 0 1\n2 1 0 0 0 0 0 1\n2 1.5 0 0 0 0 0 1\n");
+  EXPECT_EQ(read_trajectory(dir_ / "t.txt").size(), 3u);
+}
+
 TEST_F(TrajectoryIoBadInput, ShortLine) {
   EXPECT_EQ(read_error("1 0 0 0 0 0 0 1\n2 0 0 0 0 0 1\n"),
             file() + ":2: expected 8 numbers (timestamp tx ty tz qx qy qz qw), got 7");
