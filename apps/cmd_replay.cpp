@@ -184,6 +184,9 @@ int run_replay(ReplayOptions o) {
               "%zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map_resets(), system.map().keyframe_count(),
               outputs.cloud_points, o.out.string().c_str());
+  // Frames the reader skipped are not in the count above: say so.
+  if (const std::size_t skipped = source->stats().frames_skipped_corrupt; skipped > 0)
+    std::printf("replay: %zu corrupt frames skipped (not counted above)\n", skipped);
   if (const Json* ate = outputs.report.find("ate_rmse_m")) {
     std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path", ate->as_double(),
                 outputs.report.find("ate_percent_of_path")->as_double());
