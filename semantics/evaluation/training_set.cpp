@@ -44,8 +44,9 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const T
   stats.samples = sample.size();
   stats.samples_per_class.assign(kClasses, 0);
   for (const SampleCandidate& c : sample) ++stats.samples_per_class[c.class_id];
-  spdlog::info("training sample: {} of {} labelled keypoints{}", sample.size(), candidates.size(),
-               options.balance ? " (class-balanced)" : "");
+  if (!options.quiet)
+    spdlog::info("training sample: {} of {} labelled keypoints{}", sample.size(), candidates.size(),
+                 options.balance ? " (class-balanced)" : "");
 
   set.samples.create(static_cast<int>(sample.size()), descriptor.width(), CV_32F);
   set.labels.reserve(sample.size());

@@ -18,6 +18,7 @@ struct TrainingSetOptions {
   bool balance = false;         // training_sample.hpp
   std::size_t max_samples = 0;  // 0 = every labelled keypoint
   std::uint64_t seed = 1;
+  bool quiet = false;  // no info line (the optimiser builds hundreds of sets)
 };
 
 struct TrainingSetStats {

@@ -99,6 +99,7 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
   set_options.balance = true;  // the rare classes (door, sky) must count in the average rate
   set_options.max_samples = options_.max_samples;
   set_options.seed = seed_;
+  set_options.quiet = true;
   Stopwatch phase;
   const TrainingSet set = build_training_set(split_.train, set_options, *descriptor);
   e.describe_seconds = phase.elapsed_s();
