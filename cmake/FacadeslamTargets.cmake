@@ -88,7 +88,7 @@ endif()
 # FACADESLAM_BINARY (and the program is built after it). KEEP_OPTIMISED: see
 # facadeslam_test_sanitizer_optimisation above.
 function(facadeslam_test name)
-  cmake_parse_arguments(ARG "RUNS_APP;KEEP_OPTIMISED" "LABEL" "SOURCES;DEPS;FIXTURES" ${ARGN})
+  cmake_parse_arguments(ARG "RUNS_APP;KEEP_OPTIMISED;RUN_SERIAL" "LABEL" "SOURCES;DEPS;FIXTURES" ${ARGN})
   if(NOT ARG_LABEL)
     set(ARG_LABEL unit)
   endif()
@@ -121,11 +121,20 @@ function(facadeslam_test name)
     set_tests_properties(${name} PROPERTIES ENVIRONMENT "FACADESLAM_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
                                             LABELS ${ARG_LABEL} FIXTURES_REQUIRED "${ARG_FIXTURES}")
   else()
+    # Properties only when given: an empty FIXTURES_REQUIRED would swallow the
+    # next property name. RUN_SERIAL: the program's tests run alone (threaded,
+    # timing-sensitive runs).
+    set(properties ENVIRONMENT "FACADESLAM_SOURCE_DIR=${PROJECT_SOURCE_DIR}" LABELS ${ARG_LABEL})
+    if(ARG_FIXTURES)
+      list(APPEND properties FIXTURES_REQUIRED "${ARG_FIXTURES}")
+    endif()
+    if(ARG_RUN_SERIAL)
+      list(APPEND properties RUN_SERIAL TRUE)
+    endif()
     gtest_discover_tests(${name}
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
       DISCOVERY_MODE PRE_TEST
-      PROPERTIES ENVIRONMENT "FACADESLAM_SOURCE_DIR=${PROJECT_SOURCE_DIR}" LABELS ${ARG_LABEL}
-                 FIXTURES_REQUIRED "${ARG_FIXTURES}")
+      PROPERTIES ${properties})
   endif()
 endfunction()
 

@@ -136,31 +136,6 @@ TEST_F(ReplayCli, CorruptFrameMidSequenceIsCountedAndSkipped) {
   EXPECT_GE(test::json_number(report, "frames_tracked"), 34.0);
 }
 
-// The README's main job exactly as a user runs it: `facadeslam replay` with
-// no sequence replays the embedded demo threaded, with its ground truth.
-// Issue 16 holds its final trajectory (trajectory.txt, recomposed from the
-// map after the last bundle adjustment) to 0.5 % of the path. Threaded runs
-// vary with timing (measured: 0.42-0.44 % in 3 runs).
-TEST_F(ReplayCli, TheEmbeddedDemoThreadedTracksWithinHalfAPercent) {
-  const fs::path demo = test::source_dir() / "data" / "demo" / "sequence";
-  if (!fs::exists(demo / "rgb.txt")) GTEST_SKIP() << "the embedded demo is not rendered (scripts/make-demo)";
-  const fs::path out = dir_ / "demo-threaded";
-  // From the project folder, as the README runs it (the demo and the
-  // default model are found relative to it).
-  const fs::path previous = fs::current_path();
-  fs::current_path(test::source_dir());
-  const test::CliResult r = run("-q replay --out " + quoted(out));
-  fs::current_path(previous);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string report = test::read_file_text(out / "report.json");
-  const double ate = test::json_number(report, "ate_percent_of_path");
-  std::printf("[  FIGURES ] demo (threaded): trajectory.txt ATE %.3f %% of the path, %g of %g frames tracked\n", ate,
-              test::json_number(report, "frames_tracked"), test::json_number(report, "frames"));
-  std::fflush(stdout);
-  EXPECT_LE(ate, 0.5);
-  EXPECT_EQ(test::json_number(report, "frames_lost"), 0.0);
-}
-
 // Issue 20's first rule: a missing ground truth, an output that is a file or
 // cannot be made, and counts out of range fail before any frame is read,
 // with one line, writing nothing.
