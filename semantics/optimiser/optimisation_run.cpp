@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <regex>
+#include <string_view>
 #include <sstream>
 #include <thread>
 
@@ -74,20 +74,29 @@ fs::path checkpoint_path(const fs::path& out, int generation) {
   return out / name;
 }
 
+// The generation number of a checkpoint's file name, or -1.
+int checkpoint_number(const std::string& name) {
+  constexpr std::string_view prefix = "generation-", suffix = ".json";
+  if (name.size() < prefix.size() + 3 + suffix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return -1;
+  const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+  if (digits.empty() || digits.size() > 9 ||
+      !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return -1;
+  return std::stoi(digits);
+}
+
 // The newest generation-NNN.json in `out`, or empty.
 fs::path newest_checkpoint(const fs::path& out) {
-  static const std::regex pattern(R"(generation-(\d{3,})\.json)");
   fs::path newest;
   int newest_n = -1;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(out, ec)) {
-    std::smatch m;
-    const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, m, pattern) && std::stoi(m[1]) > newest_n) {
-      newest_n = std::stoi(m[1]);
+  for (const auto& entry : fs::directory_iterator(out, ec))
+    if (const int n = checkpoint_number(entry.path().filename().string()); n > newest_n) {
+      newest_n = n;
       newest = entry.path();
     }
-  }
   return newest;
 }
 
