@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include <opencv2/calib3d.hpp>
@@ -56,9 +57,11 @@ DescriptorRelocaliser::DescriptorRelocaliser(Camera camera, DescriptorRelocalise
 
 const DescriptorRelocaliser::KeyFrameDescriptors& DescriptorRelocaliser::descriptors_of(const KeyFrame& keyframe,
                                                                                        const Map& map) {
-  const Measurements measurements = map.read([&](const MapView&) { return keyframe.measurements(); });
   KeyFrameDescriptors& entry = cache_[keyframe.id()];
-  if (!entry.descriptors.empty() && 4 * measurements.size() < 5 * entry.measurements) return entry;
+  // The measurements are copied only when the descriptors are (re)computed.
+  const std::size_t count = map.read([&](const MapView&) { return keyframe.measurements().size(); });
+  if (!entry.descriptors.empty() && 4 * count < 5 * entry.measurements) return entry;
+  const Measurements measurements = map.read([&](const MapView&) { return keyframe.measurements(); });
 
   const ImagePyramid& pyramid = *keyframe.pyramid();
   std::vector<cv::KeyPoint> keypoints;
@@ -66,9 +69,8 @@ const DescriptorRelocaliser::KeyFrameDescriptors& DescriptorRelocaliser::descrip
   keypoints.reserve(measurements.size());
   for (const auto& [id, m] : measurements) {
     const int level = std::clamp(m.level, 0, pyramid.levels() - 1);
-    const double scale = ImagePyramid::level_scale(level);
-    const cv::Point2f at_level(static_cast<float>((m.pixel.x() + 0.5) / scale - 0.5),
-                               static_cast<float>((m.pixel.y() + 0.5) / scale - 0.5));
+    const Eigen::Vector2d x_level = ImagePyramid::level0_to_level(m.pixel, level);
+    const cv::Point2f at_level(static_cast<float>(x_level.x()), static_cast<float>(x_level.y()));
     const int octave = orb_octave_for_level(level);
     cv::KeyPoint kp(cv::Point2f(static_cast<float>(m.pixel.x()), static_cast<float>(m.pixel.y())),
                     kOrbPatch * std::pow(kOrbScale, static_cast<float>(octave)),
@@ -111,8 +113,10 @@ std::optional<DescriptorRelocalisation> DescriptorRelocaliser::relocalise(
     if (kf.descriptors.rows < options_.min_inliers) continue;
     std::vector<std::vector<cv::DMatch>> knn;
     matcher.knnMatch(frame_descriptors, kf.descriptors, knn, 2);
-    // Ratio test, then one frame feature per map point (the closest).
-    std::unordered_map<MapPoint::Id, cv::DMatch> per_point;
+    // Ratio test, then one frame feature per map point (the closest). Kept
+    // in id order: the RANSAC sample order, and so its result, must not
+    // depend on a hash map's iteration order.
+    std::map<MapPoint::Id, cv::DMatch> per_point;
     for (const auto& m : knn) {
       if (m.empty() || m[0].distance > options_.max_hamming) continue;
       if (m.size() > 1 && m[0].distance > options_.ratio * m[1].distance) continue;
@@ -125,17 +129,12 @@ std::optional<DescriptorRelocalisation> DescriptorRelocaliser::relocalise(
     std::vector<cv::Point3d> object;
     std::vector<cv::Point2d> image;
     map.read([&](const MapView& view) {
-      // In id order: the RANSAC sample order, and so its result, must not
-      // depend on the hash map's iteration order.
-      std::vector<std::pair<MapPoint::Id, int>> ordered;
-      for (const auto& [id, m] : per_point) ordered.emplace_back(id, m.queryIdx);
-      std::sort(ordered.begin(), ordered.end());
-      for (const auto& [id, query] : ordered) {
+      for (const auto& [id, match] : per_point) {
         const auto point = view.point(id);
         if (!point || point->is_bad()) continue;
         const Eigen::Vector3d& p = point->geometry().p_w;
         object.emplace_back(p.x(), p.y(), p.z());
-        image.push_back(frame_rays[static_cast<std::size_t>(query)]);
+        image.push_back(frame_rays[static_cast<std::size_t>(match.queryIdx)]);
       }
     });
     if (static_cast<int>(object.size()) < options_.min_inliers) continue;
