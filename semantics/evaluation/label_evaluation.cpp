@@ -29,22 +29,13 @@ std::vector<LabelledImage> first(std::vector<LabelledImage> images, std::size_t 
 void test_forest(const std::vector<LabelledImage>& images, const LabelEvaluationOptions& options,
                  PointDescriptor& descriptor, const RandomForest& forest, LabelEvaluation& result) {
   Progress progress("testing", images.size());
-  for (std::size_t i = 0; i < images.size(); ++i) {
-    const LoadedLabelledImage loaded = load_labelled_image(images[i]);
-    const LabelledKeypoints kps = labelled_keypoints(loaded.label, options.step);
-    result.unlabelled_keypoints += kps.unlabelled;
-    result.test_keypoints += kps.points.size();
-    if (!kps.points.empty()) {
-      Stopwatch stage;
-      const cv::Mat rows = descriptor.compute(loaded.bgr, kps.points);
-      result.test_extraction_seconds += stage.elapsed_s();
-      stage.restart();
-      const std::vector<int> predicted = forest.predict(rows);
-      result.forest_seconds += stage.elapsed_s();
-      for (std::size_t k = 0; k < predicted.size(); ++k) result.confusion.add(kps.classes[k], predicted[k]);
-    }
-    progress.update(i + 1);
-  }
+  const ClassifiedImages c = classify_labelled_images(
+      images, options.step, descriptor, forest, result.confusion,
+      [&](std::size_t i, const LoadedLabelledImage&, const LabelledKeypoints&, double) { progress.update(i + 1); });
+  result.unlabelled_keypoints += c.unlabelled;
+  result.test_keypoints += c.keypoints;
+  result.test_extraction_seconds += c.extraction_seconds;
+  result.forest_seconds += c.forest_seconds;
 }
 
 Json metrics_json(const ClassMetrics& m) {
@@ -77,6 +68,31 @@ double LabelEvaluation::extraction_ms_per_image() const {
 
 double LabelEvaluation::forest_ms_per_image() const {
   return test_images ? 1e3 * forest_seconds / static_cast<double>(test_images) : std::nan("");
+}
+
+ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& images, int step,
+                                          PointDescriptor& descriptor, const RandomForest& forest,
+                                          ConfusionMatrix& confusion, const AfterImage& after_image) {
+  ClassifiedImages out;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const LoadedLabelledImage loaded = load_labelled_image(images[i]);
+    const LabelledKeypoints kps = labelled_keypoints(loaded.label, step);
+    out.unlabelled += kps.unlabelled;
+    out.keypoints += kps.points.size();
+    double extraction_s = 0.0;
+    if (!kps.points.empty()) {
+      Stopwatch stage;
+      const cv::Mat rows = descriptor.compute(loaded.bgr, kps.points);
+      extraction_s = stage.elapsed_s();
+      out.extraction_seconds += extraction_s;
+      stage.restart();
+      const std::vector<int> predicted = forest.predict(rows);
+      out.forest_seconds += stage.elapsed_s();
+      for (std::size_t k = 0; k < predicted.size(); ++k) confusion.add(kps.classes[k], predicted[k]);
+    }
+    if (after_image) after_image(i, loaded, kps, extraction_s);
+  }
+  return out;
 }
 
 std::vector<std::string> evaluation_class_names() {

@@ -10,16 +10,22 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "core/util/json.hpp"
 #include "semantics/descriptor/genome.hpp"
 #include "semantics/evaluation/confusion_matrix.hpp"
+#include "semantics/evaluation/facade_dataset.hpp"
 #include "semantics/evaluation/grid_keypoints.hpp"
+#include "semantics/evaluation/labelled_keypoints.hpp"
 #include "semantics/forest/forest_params.hpp"
 
 namespace facadeslam::semantics {
+
+class PointDescriptor;
+class RandomForest;
 
 struct LabelEvaluationOptions {
   std::filesystem::path dataset;
@@ -74,6 +80,22 @@ LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std:
 // per-class tp fp fn tn accuracy precision recall specificity npv f1,
 // the confusion matrix and the timings.
 Json to_json(const LabelEvaluation& result, const LabelEvaluationOptions& options);
+
+// The test loop shared by `evaluate labels` and the optimiser's fitness:
+// each image's grid keypoints (`step`) described, classified by `forest` and
+// counted in `confusion`. `after_image(index, loaded, keypoints,
+// extraction_seconds)`, if given, is called for every image once it is
+// counted (keypoints may be empty): progress, or timing a peer descriptor on
+// the same keypoints.
+struct ClassifiedImages {
+  std::size_t keypoints = 0, unlabelled = 0;
+  double extraction_seconds = 0, forest_seconds = 0;
+};
+using AfterImage = std::function<void(std::size_t index, const LoadedLabelledImage& loaded,
+                                      const LabelledKeypoints& keypoints, double extraction_seconds)>;
+ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& images, int step,
+                                          PointDescriptor& descriptor, const RandomForest& forest,
+                                          ConfusionMatrix& confusion, const AfterImage& after_image = {});
 
 // Class names in id order (LabelMeFacade's nine).
 std::vector<std::string> evaluation_class_names();

@@ -11,6 +11,7 @@
 #include "core/util/progress.hpp"
 #include "core/util/stopwatch.hpp"
 #include "semantics/evaluation/confusion_matrix.hpp"
+#include "semantics/evaluation/label_evaluation.hpp"
 #include "semantics/evaluation/labelled_keypoints.hpp"
 #include "semantics/evaluation/training_set.hpp"
 #include "semantics/forest/forest_params.hpp"
@@ -115,24 +116,17 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
   ConfusionMatrix confusion(static_cast<int>(kSemanticClasses.size()));
   double descriptor_s = 0.0, sift_s = 0.0;
   std::size_t timed = 0;
-  for (const LabelledImage& image : split_.validation) {
-    const LoadedLabelledImage loaded = load_labelled_image(image);
-    const LabelledKeypoints kps = labelled_keypoints(loaded.label, options_.step);
-    if (kps.points.empty()) continue;
-    Stopwatch stage;
-    const cv::Mat rows = descriptor->compute(loaded.bgr, kps.points);
-    const double image_s = stage.elapsed_s();
-    if (timed < options_.timing_images) {
-      // The ratio on the first images, the genome and SIFT back to back.
-      ++timed;
-      descriptor_s += image_s;
-      stage.restart();
-      const cv::Mat sift_rows = sift->compute(loaded.bgr, kps.points);
-      sift_s += stage.elapsed_s();
-    }
-    const std::vector<int> predicted = forest.predict(rows);
-    for (std::size_t k = 0; k < predicted.size(); ++k) confusion.add(kps.classes[k], predicted[k]);
-  }
+  classify_labelled_images(split_.validation, options_.step, *descriptor, forest, confusion,
+                           [&](std::size_t, const LoadedLabelledImage& loaded, const LabelledKeypoints& kps,
+                               double extraction_s) {
+                             // The ratio on the first images: the genome's time, then SIFT's on the same keypoints.
+                             if (kps.points.empty() || timed >= options_.timing_images) return;
+                             ++timed;
+                             descriptor_s += extraction_s;
+                             const Stopwatch stage;
+                             const cv::Mat sift_rows = sift->compute(loaded.bgr, kps.points);
+                             sift_s += stage.elapsed_s();
+                           });
   e.validate_seconds = phase.elapsed_s();
   e.valid = confusion.total() > 0;
   e.overall = e.valid ? confusion.overall_recognition_rate() : 0.0;
