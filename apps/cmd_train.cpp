@@ -24,6 +24,7 @@ struct Options {
   semantics::TrainingOptions training;
   std::string genome;  // text, file or empty (thesis genome)
   std::filesystem::path out;
+  std::string keypoints = "grid";
 };
 
 std::filesystem::path summary_path(const std::filesystem::path& model) {
@@ -34,6 +35,7 @@ std::filesystem::path summary_path(const std::filesystem::path& model) {
 void run(Options& o) {
   // Every input and both outputs are checked before the long work.
   o.training.genome = resolve_genome(o.genome);
+  o.training.keypoints = semantics::parse_keypoint_source(o.keypoints, "--keypoints");
   std::string name = o.out.filename().string();
   if (name.size() <= 8 || name.compare(name.size() - 8, 8, ".fsmodel") != 0)
     fail_file(o.out, "expected a model file name ending in .fsmodel");
@@ -75,6 +77,11 @@ void add_train_command(CLI::App& app) {
   cmd->add_option("--max-train", t.max_train_images, "Use only the first N images of train.txt (0 = all)")
       ->capture_default_str();
   cmd->add_option("--step", t.step, "Grid step in pixels")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_option("--keypoints", options->keypoints,
+                  "Training keypoints: grid (the thesis' regular grid, --step) or corners (FAST corners at full "
+                  "and half resolution: where the map's points are)")
+      ->check(CLI::IsMember({"grid", "corners"}))
+      ->capture_default_str();
   cmd->add_option("--seed", t.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
   cmd->add_option("--trees", t.trees, "Number of trees (default: the genome's)")->check(CLI::Range(1, 10000));
   cmd->add_option("--depth", t.max_depth, "Maximum tree depth (default: the genome's)")->check(CLI::Range(1, 1000));

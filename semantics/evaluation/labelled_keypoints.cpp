@@ -6,8 +6,11 @@
 namespace facadeslam::semantics {
 
 LabelledKeypoints labelled_keypoints(const cv::Mat& label_bgr, int step) {
+  return labelled_keypoints(label_bgr, grid_keypoints(label_bgr.size(), step));
+}
+
+LabelledKeypoints labelled_keypoints(const cv::Mat& label_bgr, const std::vector<cv::Point2f>& grid) {
   LabelledKeypoints out;
-  const std::vector<cv::Point2f> grid = grid_keypoints(label_bgr.size(), step);
   const std::vector<std::uint8_t> classes = classes_at(label_bgr, grid);
   for (std::size_t k = 0; k < grid.size(); ++k) {
     if (classes[k] == kUnknownClass) {

@@ -18,4 +18,7 @@ struct LabelledKeypoints {
 
 LabelledKeypoints labelled_keypoints(const cv::Mat& label_bgr, int step);
 
+// The same for given points (corner_keypoints.hpp, say).
+LabelledKeypoints labelled_keypoints(const cv::Mat& label_bgr, const std::vector<cv::Point2f>& points);
+
 }  // namespace facadeslam::semantics

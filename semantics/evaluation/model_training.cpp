@@ -47,6 +47,7 @@ TrainingRun train_model(const TrainingOptions& options) {
 
   TrainingSetOptions set_options;
   set_options.step = options.step;
+  set_options.keypoints = options.keypoints;
   set_options.balance = options.balance;
   set_options.max_samples = options.max_samples;
   set_options.seed = options.seed;
@@ -91,6 +92,7 @@ Json training_summary_json(const TrainingRun& run, const TrainingOptions& option
   forest["nodes"] = static_cast<unsigned long long>(run.model.forest.nodes().size());
   j["forest"] = std::move(forest);
   j["grid_step"] = options.step;
+  j["keypoints"] = keypoint_source_name(options.keypoints);
   j["balance"] = options.balance;
   j["max_samples"] = static_cast<unsigned long long>(options.max_samples);
   j["train_images"] = static_cast<unsigned long long>(run.train_images);

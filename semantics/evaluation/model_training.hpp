@@ -22,6 +22,7 @@ struct TrainingOptions {
   std::string descriptor = "modular";  // a kPointDescriptorNames entry
   Genome genome = Genome::thesis_best();
   int step = kDefaultGridStep;
+  KeypointSource keypoints = KeypointSource::grid;  // grid (the thesis') or FAST corners (the map's)
   bool balance = false;
   std::size_t max_train_images = 0;  // first N of train.txt; 0 = all
   std::size_t max_samples = 0;       // training keypoints cap; 0 = all

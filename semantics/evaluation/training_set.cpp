@@ -23,7 +23,9 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const T
     Progress progress("reading training labels", images.size());
     for (std::size_t i = 0; i < images.size(); ++i) {
       const LoadedLabelledImage loaded = load_labelled_image(images[i]);
-      LabelledKeypoints kps = labelled_keypoints(loaded.label, options.step);
+      LabelledKeypoints kps = options.keypoints == KeypointSource::grid
+                                  ? labelled_keypoints(loaded.label, options.step)
+                                  : labelled_keypoints(loaded.label, corner_keypoints(loaded.bgr));
       stats.unlabelled_keypoints += kps.unlabelled;
       for (std::size_t k = 0; k < kps.points.size(); ++k) {
         candidates.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k), kps.classes[k]});

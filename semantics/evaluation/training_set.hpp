@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "semantics/evaluation/corner_keypoints.hpp"
 #include "semantics/evaluation/facade_dataset.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
 
@@ -15,6 +16,7 @@ namespace facadeslam::semantics {
 
 struct TrainingSetOptions {
   int step = 9;                 // grid step
+  KeypointSource keypoints = KeypointSource::grid;  // where the rows are described
   bool balance = false;         // training_sample.hpp
   std::size_t max_samples = 0;  // 0 = every labelled keypoint
   std::uint64_t seed = 1;

@@ -17,6 +17,7 @@
 #include "semantics/evaluation/confusion_matrix.hpp"
 #include "semantics/evaluation/confusion_plot.hpp"
 #include "semantics/evaluation/facade_dataset.hpp"
+#include "semantics/evaluation/corner_keypoints.hpp"
 #include "semantics/evaluation/grid_keypoints.hpp"
 #include "semantics/evaluation/label_comparison.hpp"
 #include "semantics/evaluation/label_evaluation.hpp"
@@ -42,6 +43,28 @@ TEST(GridKeypoints, KeepTheBorderAndTheStep) {
   EXPECT_EQ(grid_keypoints({3, 2}, 1, 0).size(), 6u);
   EXPECT_THROW(grid_keypoints({50, 40}, 0, 10), Error);
   EXPECT_THROW(grid_keypoints({50, 40}, 9, -1), Error);
+}
+
+// A bright square on black: FAST finds its four corners (at full and half
+// resolution, each pixel once), nothing within the border, nothing on flat
+// ground.
+TEST(CornerKeypoints, FindTheCornersOfASquareInsideTheBorder) {
+  cv::Mat image(120, 160, CV_8UC3, cv::Scalar::all(0));
+  cv::rectangle(image, cv::Rect(40, 30, 60, 50), cv::Scalar::all(255), cv::FILLED);
+  const std::vector<cv::Point2f> points = corner_keypoints(image, 10);
+  ASSERT_FALSE(points.empty());
+  for (const cv::Point2f& p : points) {
+    const bool near_a_corner = (std::abs(p.x - 40) <= 3 || std::abs(p.x - 99) <= 3) &&
+                               (std::abs(p.y - 30) <= 3 || std::abs(p.y - 79) <= 3);
+    EXPECT_TRUE(near_a_corner) << p;
+  }
+  for (std::size_t i = 1; i < points.size(); ++i)
+    EXPECT_TRUE(points[i - 1].y < points[i].y || (points[i - 1].y == points[i].y && points[i - 1].x < points[i].x));
+  EXPECT_TRUE(corner_keypoints(cv::Mat(120, 160, CV_8UC3, cv::Scalar::all(90)), 10).empty());
+  // The square's corners lie within a 50-pixel border: none kept.
+  EXPECT_TRUE(corner_keypoints(image, 50).empty());
+  EXPECT_EQ(parse_keypoint_source("corners", "--keypoints"), KeypointSource::corners);
+  EXPECT_THROW(parse_keypoint_source("fast", "--keypoints"), Error);
 }
 
 TEST(LabelImage, ColoursMapToTheNineClasses) {

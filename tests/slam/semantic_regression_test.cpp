@@ -86,5 +86,29 @@ TEST(SemanticRegression, StreetDynamicTracksBetterWithLabels) {
   EXPECT_LE(on.ate.ate_percent_of_path, 0.85 * off.ate.ate_percent_of_path);
 }
 
+// Traffic that fills the view: cars driving beside the walker at its own
+// pace pull a label-blind tracker off (the scene must prove that: >= 2x its
+// static twin, the same street and path with nothing moving). The issue asks
+// that the labels bring it back to <= 1.2x the twin; with the shipped forest
+// they cannot (it calls 31 % of the close-up car points car, and a forest
+// also trained on renders of train-split cars 25 %: docs/benchmarks.md), so
+// the test holds what is true today: the labels never make it worse and no
+// frame is lost. The figures are printed for both.
+TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndLabelsDoNotMakeItWorse) {
+  FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
+  const SemanticRun twin = run_scene("street-traffic-static", false);
+  const SemanticRun off = run_scene("street-traffic", false);
+  const SemanticRun on = run_scene("street-traffic", true);
+  std::printf("[  FIGURES ] street-traffic: ATE %.3f %% with labels, %.3f %% without, static twin %.3f %%; lost %zu / "
+              "%zu\n",
+              on.ate.ate_percent_of_path, off.ate.ate_percent_of_path, twin.ate.ate_percent_of_path,
+              on.log.lost_frames().size(), off.log.lost_frames().size());
+  EXPECT_TRUE(twin.log.lost_frames().empty());
+  EXPECT_GE(off.ate.ate_percent_of_path, 2.0 * twin.ate.ate_percent_of_path);
+  EXPECT_TRUE(on.log.lost_frames().empty());
+  EXPECT_GT(on.dropped, 0u) << "label-aware tracking never weighed a car point down";
+  EXPECT_LE(on.ate.ate_percent_of_path, 1.05 * off.ate.ate_percent_of_path);
+}
+
 }  // namespace
 }  // namespace facadeslam
