@@ -1,5 +1,6 @@
 #include "apps/cli_support.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 #include <unistd.h>
@@ -52,6 +53,25 @@ void require_creatable_folder(const std::filesystem::path& folder) {
   if (!std::filesystem::create_directory(probe, ec) || ec)
     fail_file(folder, "an output folder, but nothing can be made in " + existing.string());
   std::filesystem::remove(probe, ec);
+}
+
+void require_replaceable_folder(const std::filesystem::path& folder, const std::string& marker,
+                                const std::vector<std::string>& outputs, const std::string& command) {
+  std::error_code ec;
+  if (!std::filesystem::exists(folder, ec)) return;
+  if (!std::filesystem::is_directory(folder, ec)) fail_file(folder, "an output folder, but it is a file");
+  if (std::filesystem::exists(folder / marker, ec)) return;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.front() == '.' || std::find(outputs.begin(), outputs.end(), name) != outputs.end()) continue;
+    std::string what = "an output folder, which a run replaces as a whole, but it holds ";
+    what.append(quoted_for_message(name)).append(", not an earlier ").append(command);
+    fail_file(folder, what.append(" output (no ").append(marker).append("): give a new or empty folder"));
+  }
+}
+
+void fail_usage(const std::string& option, const std::string& message) {
+  throw CLI::ValidationError(option, message);
 }
 
 std::pair<int, int> parse_image_size(const std::string& text, const std::string& option) {
