@@ -19,6 +19,19 @@ void require_writable_output(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail_file(path, "is a folder (expected an output file name)");
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  // The folders made for the probe are removed again (the writers make
+  // them when they write): a run that fails later leaves no empty folder.
+  std::filesystem::path first_missing;
+  for (std::filesystem::path p = std::filesystem::absolute(folder, ec).lexically_normal();
+       !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    first_missing = p;
+  struct RemoveMade {
+    std::filesystem::path root;
+    ~RemoveMade() {
+      std::error_code ignored;
+      if (!root.empty()) std::filesystem::remove_all(root, ignored);
+    }
+  } remove_made{first_missing};
   std::filesystem::create_directories(folder, ec);
   if (ec || !std::filesystem::is_directory(folder)) {
     std::string what = "cannot create its folder (";

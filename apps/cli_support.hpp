@@ -19,8 +19,9 @@ inline constexpr int kExitNotInitialised = 3;  // replay ran, but the map never 
 void require_file(const std::filesystem::path& path, const std::string& what);
 
 // An output file that can be written: not a folder, and its folder exists
-// (created if needed) and takes a new file (probed with an empty file that
-// is removed again). For checks before long runs.
+// or can be made, and takes a new file (probed with an empty file; the
+// probe and any folder made for it are removed again). For checks before
+// long runs.
 void require_writable_output(const std::filesystem::path& path);
 
 // The same for an output folder, without creating anything: `folder` is a
