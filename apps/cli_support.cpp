@@ -1,5 +1,6 @@
 #include "apps/cli_support.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 #include <unistd.h>
@@ -18,6 +19,19 @@ void require_writable_output(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail_file(path, "is a folder (expected an output file name)");
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  // The folders made for the probe are removed again (the writers make
+  // them when they write): a run that fails later leaves no empty folder.
+  std::filesystem::path first_missing;
+  for (std::filesystem::path p = std::filesystem::absolute(folder, ec).lexically_normal();
+       !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    first_missing = p;
+  struct RemoveMade {
+    std::filesystem::path root;
+    ~RemoveMade() {
+      std::error_code ignored;
+      if (!root.empty()) std::filesystem::remove_all(root, ignored);
+    }
+  } remove_made{first_missing};
   std::filesystem::create_directories(folder, ec);
   if (ec || !std::filesystem::is_directory(folder)) {
     std::string what = "cannot create its folder (";
@@ -52,6 +66,25 @@ void require_creatable_folder(const std::filesystem::path& folder) {
   if (!std::filesystem::create_directory(probe, ec) || ec)
     fail_file(folder, "an output folder, but nothing can be made in " + existing.string());
   std::filesystem::remove(probe, ec);
+}
+
+void require_replaceable_folder(const std::filesystem::path& folder, const std::string& marker,
+                                const std::vector<std::string>& outputs, const std::string& command) {
+  std::error_code ec;
+  if (!std::filesystem::exists(folder, ec)) return;
+  if (!std::filesystem::is_directory(folder, ec)) fail_file(folder, "an output folder, but it is a file");
+  if (std::filesystem::exists(folder / marker, ec)) return;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.front() == '.' || std::find(outputs.begin(), outputs.end(), name) != outputs.end()) continue;
+    std::string what = "an output folder, which a run replaces as a whole, but it holds ";
+    what.append(quoted_for_message(name)).append(", not an earlier ").append(command);
+    fail_file(folder, what.append(" output (no ").append(marker).append("): give a new or empty folder"));
+  }
+}
+
+void fail_usage(const std::string& option, const std::string& message) {
+  throw CLI::ValidationError(option, message);
 }
 
 std::pair<int, int> parse_image_size(const std::string& text, const std::string& option) {

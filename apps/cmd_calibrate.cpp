@@ -10,6 +10,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
 #include "calib/calibrate.hpp"
 #include "calib/calibration_report.hpp"
@@ -50,13 +51,20 @@ void run(const Options& o) {
   request.quality.max_edge_width_px = o.max_edge_width;
   request.quality.duplicate_fraction = o.duplicate_fraction;
 
+  // Every output can be written before the images are read; the plot is
+  // written before the camera file, so that a failed plot leaves no
+  // camera.yaml behind.
+  const std::filesystem::path plot = o.plot.empty() ? default_plot_path(o.out) : o.plot;
+  require_writable_output(o.out);
+  require_writable_output(plot);
+  if (!o.json.empty()) require_writable_output(o.json);
+
   const calib::CalibrationRun run = calib::run_calibration(request);
   std::fputs(calib::format_report(run).c_str(), stdout);
   std::fflush(stdout);
 
-  calib::write_camera_file(o.out, run);
-  const std::filesystem::path plot = o.plot.empty() ? default_plot_path(o.out) : o.plot;
   calib::save_residual_plot(plot, run.views, run.result, run.coverage);
+  calib::write_camera_file(o.out, run);
   std::printf("wrote %s\nwrote %s\n", o.out.string().c_str(), plot.string().c_str());
   if (!o.json.empty()) {
     Json report = calib::report_json(run);

@@ -10,6 +10,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "apps/cli_support.hpp"
 #include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
 #include "core/util/json.hpp"
@@ -46,10 +47,9 @@ std::string option_name(std::string_view case_name) {
   return name.append(case_name);
 }
 
-// "--<option>: <message>" for an Error raised while reading that option.
+// "--<option>: <message>" for a bad option value: a bad command line (exit code 2).
 [[noreturn]] void fail_option(const std::string& option, const std::string& message) {
-  std::string text = option;
-  throw Error(text.append(": ").append(message));
+  fail_usage(option, message);
 }
 
 std::vector<semantics::InvarianceCaseRun> chosen_cases(const Options& o) {
@@ -80,7 +80,7 @@ std::vector<semantics::InvarianceCaseRun> chosen_cases(const Options& o) {
     } catch (const Error& e) {
       // The message starts with the case name, which is the option's name.
       std::string text = "--";
-      throw Error(text.append(e.what()));
+      throw CLI::ValidationError(text.append(e.what()));
     }
     runs.push_back(std::move(run));
   }
@@ -99,6 +99,10 @@ void run(const Options& o) {
   std::string plot_extension = o.plot.extension().string();
   for (char& c : plot_extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (!o.plot.empty() && plot_extension != ".png") fail_file(o.plot, "expected a file name ending in .png for the plot");
+  // Every output location, before the long run.
+  if (!o.plot.empty()) require_writable_output(o.plot);
+  if (!o.json.empty()) require_writable_output(o.json);
+  if (!o.plot_dir.empty()) require_creatable_folder(o.plot_dir);
 
   std::vector<std::unique_ptr<semantics::PointDescriptor>> owned;
   for (const std::string& name : semantics::expand_descriptor_names(o.descriptors)) {

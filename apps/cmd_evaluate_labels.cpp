@@ -67,6 +67,15 @@ void print_summary(const semantics::LabelEvaluation& r) {
     std::printf("  extraction %.1f ms/image, forest %.1f ms/image, total %.1f s\n", r.extraction_ms_per_image(),
                 r.forest_ms_per_image(), r.total_seconds);
   std::fflush(stdout);
+  // Pixels of a colour that is no class colour (a label PNG from another
+  // palette, anti-aliased edges) are left out: said, and counted in the
+  // report as unlabelled_keypoints.
+  if (r.unlabelled_keypoints > 0) {
+    const std::size_t grid = r.train_keypoints + r.test_keypoints + r.unlabelled_keypoints;
+    spdlog::warn("{} of {} grid keypoints ({:.1f} %) lie on a label colour of no class and were left out "
+                 "(unlabelled_keypoints in the report)",
+                 r.unlabelled_keypoints, grid, 100.0 * static_cast<double>(r.unlabelled_keypoints) / static_cast<double>(grid));
+  }
 }
 
 // With several descriptors each gets its own confusion PNG: NAME_<descriptor>.png.
@@ -92,7 +101,6 @@ void write_report(const Options& o, const Json& report) {
 
 // --model: the model's own descriptor, genome and forest on test.txt.
 void run_model(const Options& o) {
-  if (!o.json.empty()) require_writable_output(o.json);
   const semantics::LabelEvaluation result = semantics::evaluate_model(o.evaluation, o.model);
   print_summary(result);
   if (!o.confusion.empty()) save_confusion(o.confusion, result);
@@ -100,19 +108,26 @@ void run_model(const Options& o) {
 }
 
 void run(Options& o) {
-  // Output names are checked now, not after an hour of training.
+  // Output names and locations are checked now, not after an hour of
+  // training: every output can be written (so that --model-out is not
+  // written when --confusion or --json would fail after it).
   if (!o.confusion.empty() && o.confusion.extension() != ".png")
     fail_file(o.confusion, "expected a file name ending in .png for the confusion matrix");
+  if (!o.json.empty()) require_writable_output(o.json);
   if (!o.model.empty()) {
+    if (!o.confusion.empty()) require_writable_output(o.confusion);
     run_model(o);
     return;
   }
   o.evaluation.genome = resolve_genome(o.genome);
   const std::vector<std::string> descriptors = semantics::expand_descriptor_names(o.descriptors);
   const bool several = descriptors.size() > 1;
+  if (!o.confusion.empty())
+    for (const std::string& name : descriptors) require_writable_output(confusion_path(o, name, several));
   if (!o.evaluation.model_out.empty()) {
     semantics::require_model_file_name(o.evaluation.model_out);
     if (several) throw Error("--model-out: a model file holds one descriptor's forest; give one --descriptor");
+    require_writable_output(o.evaluation.model_out);
   }
   std::vector<semantics::LabelEvaluation> results;
   Json reports = Json::array();

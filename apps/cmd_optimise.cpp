@@ -77,6 +77,8 @@ std::optional<semantics::OptimiseResult> run_under_mpi(const Options& o) {
 #endif
 
 void run(Options& o) {
+  // The run folder can be made (or is one) before any work.
+  require_creatable_folder(o.run.out);
   if (o.config_given || std::filesystem::exists(o.config)) o.run.ga = semantics::load_ga_options(o.config);
   if (o.population) o.run.ga.population = *o.population;
   if (o.generations) o.run.ga.generations = *o.generations;

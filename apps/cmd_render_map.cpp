@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 
 #include <spdlog/spdlog.h>
 
@@ -59,7 +60,12 @@ void run(const Options& o) {
   std::string extension = o.out.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension != ".png") fail_file(o.out, "expected an output file name ending in .png");
-  const auto [width, height] = parse_image_size(o.size, "--size");
+  int width = 0, height = 0;
+  try {
+    std::tie(width, height) = parse_image_size(o.size, "--size");
+  } catch (const Error& e) {
+    throw CLI::ValidationError(e.what());  // a bad command line: exit code 2
+  }
   require_writable_output(o.out);
 
   const LabelledPointCloud cloud = read_labelled_point_cloud(o.map_ply);

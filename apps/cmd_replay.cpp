@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <spdlog/spdlog.h>
 
@@ -16,11 +18,13 @@
 #include "apps/replay/replay_log.hpp"
 #include "apps/replay/replay_outputs.hpp"
 #include "apps/replay/replay_render.hpp"
+#include "apps/replay/synth_manifest.hpp"
 #include "core/camera/camera_yaml.hpp"
 #include "core/trajectory/trajectory_io.hpp"
 #include "core/util/error.hpp"
 #include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
+#include "core/util/staged_folder.hpp"
 #include "core/util/stopwatch.hpp"
 #include "semantics/evaluation/map_label_accuracy.hpp"
 #include "sequences/open_sequence.hpp"
@@ -40,6 +44,11 @@ const fs::path kDefaultOutput = "facadeslam-out";
 // to the project root.
 const fs::path kDefaultModel = "models/default.fsmodel";
 const fs::path kDefaultSemanticsConfig = "configs/semantics.yaml";
+// What a replay writes into --out (an older run's folder without report.json
+// still counts as one: require_replaceable_folder).
+const std::vector<std::string> kReplayOutputNames = {"trajectory.txt", "trajectory_online.txt", "keyframes.txt",
+                                                     "map.ply",        "map.classes.json",      "map.fslmap",
+                                                     "report.json",    "trajectory.png",        "render"};
 
 struct ReplayOptions {
   fs::path sequence, camera, config, out, gt, gt_labels, save_map, load_map;
@@ -92,6 +101,15 @@ int run_replay(ReplayOptions o) {
   // end in "no such file").
   if (!o.gt.empty() && read_trajectory(o.gt).size() < 2)
     fail_file(o.gt, "a ground-truth trajectory of at least 2 poses");
+  if (!o.load_map.empty()) require_file(o.load_map, "a map file (.fslmap) written by replay --save-map");
+  // The outputs go to a staging folder beside --out, moved into place at
+  // the end (core/util/staged_folder.hpp): a failed or aborted run leaves
+  // the previous folder as it was. Made now, so that a bad --out fails
+  // before any frame; removed again if anything below fails.
+  require_replaceable_folder(o.out, "report.json", kReplayOutputNames, "replay");
+  StagedFolder staged(o.out);
+  if (!o.save_map.empty() && !staged.contains(o.save_map))
+    require_creatable_folder(o.save_map.parent_path().empty() ? "." : o.save_map.parent_path());
   // The render folder is checked (and the video opened) before any frame is
   // read: a bad folder is a bad command line, found at once.
   std::unique_ptr<ReplayRender> ar_render;
@@ -101,7 +119,7 @@ int run_replay(ReplayOptions o) {
       // frames are skipped, so that the motion keeps about its pace.
       const double video_fps = std::clamp(30.0 / static_cast<double>(o.render_every), 5.0, 30.0);
       ar_render = std::make_unique<ReplayRender>(
-          ReplayRenderOptions{o.render, o.render_every, video_fps,
+          ReplayRenderOptions{staged.staged(o.render), o.render_every, video_fps,
                               "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string()},
           camera);
     } catch (const Error& e) {
@@ -118,15 +136,12 @@ int run_replay(ReplayOptions o) {
   seq.limit = o.limit;
   seq.on_corrupt = corrupt_policy_from_string(o.on_corrupt);
   auto source = open_sequence(o.sequence, seq);
+  check_synth_manifest(o.sequence);
   spdlog::info("replaying {} with camera {} ({})", source->description(), o.camera.string(),
                o.sync ? "synchronous" : "threaded");
 
   System system(camera, slam);
   if (!o.load_map.empty()) system.load_map(o.load_map);
-  // The output locations can be made (nothing is created before the end,
-  // so a bad input found later leaves no empty folder behind).
-  require_creatable_folder(o.out);
-  if (!o.save_map.empty()) require_creatable_folder(o.save_map.parent_path().empty() ? "." : o.save_map.parent_path());
 
   std::optional<GroundTruthLabelFiles> gt_labels;
   if (const fs::path folder = find_ground_truth_labels(o.sequence, o.gt_labels); !folder.empty()) {
@@ -178,8 +193,10 @@ int run_replay(ReplayOptions o) {
   if (gt_labels && slam.semantics.enabled)
     info.label_accuracy =
         semantics::map_label_accuracy(system.map(), [&](std::size_t index) { return gt_labels->class_ids(index); });
-  const ReplayOutputs outputs = write_replay_outputs(
-      {o.out, o.save_map.empty() ? o.out / "map.fslmap" : o.save_map, o.gt}, info, log, system, source->stats());
+  const ReplayOutputs outputs =
+      write_replay_outputs({staged.path(), o.save_map.empty() ? staged.path() / "map.fslmap" : staged.staged(o.save_map), o.gt},
+                           info, log, system, source->stats());
+  staged.commit();
   std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu map resets, %zu keyframes, "
               "%zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map_resets(), system.map().keyframe_count(),

@@ -5,13 +5,17 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <spdlog/spdlog.h>
 
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
 #include "core/util/error.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
+#include "core/util/staged_folder.hpp"
 #include "sequences/synth/scene_loader.hpp"
 #include "sequences/synth/synthesize.hpp"
 
@@ -28,7 +32,25 @@ struct SynthCliOptions {
   int sheet_frames = 6;
 };
 
+// What synth writes into --out (require_replaceable_folder).
+const std::vector<std::string> kSynthOutputNames = {"rgb",        "label",       "depth",       "rgb.txt",
+                                                    "depth.txt",  "groundtruth.txt", "camera.yaml", "labels.txt",
+                                                    "scene.yaml", "synth.json"};
+
+// Thrown from the progress callback after Ctrl-C: the frame loop stops.
+struct Interrupted {};
+
 void run(const SynthCliOptions& o) {
+  // The command line first (exit code 2), then the scene and the output
+  // locations, all before the first frame.
+  std::optional<std::pair<int, int>> resolution;
+  if (!o.resolution.empty()) {
+    try {
+      resolution = parse_image_size(o.resolution, "--resolution");
+    } catch (const Error& e) {
+      throw CLI::ValidationError(e.what());
+    }
+  }
   require_file(o.scene, "a scene YAML file (see configs/scenes/)");
   synth::SceneSpec spec = synth::load_scene(o.scene);
   // Command-line overrides, each checked as the scene file's keys are.
@@ -36,20 +58,36 @@ void run(const SynthCliOptions& o) {
   if (o.fps) spec.fps = *o.fps;
   if (o.seed) spec.seed = static_cast<std::uint64_t>(*o.seed);
   if (o.noise) spec.noise_sigma = *o.noise;
-  if (!o.resolution.empty()) {
-    const auto [w, h] = parse_image_size(o.resolution, "--resolution");
-    spec.camera = spec.camera.resized(w, h);
-  }
+  if (resolution) spec.camera = spec.camera.resized(resolution->first, resolution->second);
   if (o.frames || o.fps) synth::check_trajectory_covers_frames(spec, "--frames/--fps");
+
+  // The sequence is rendered into a staging folder beside --out and moved
+  // into place at the end: a failed or interrupted run leaves the previous
+  // sequence as it was, never frames of two runs (core/util/staged_folder.hpp).
+  require_replaceable_folder(o.out, "synth.json", kSynthOutputNames, "synth");
+  StagedFolder staged(o.out);
+  if (!o.contact_sheet.empty() && !staged.contains(o.contact_sheet)) require_writable_output(o.contact_sheet);
 
   spdlog::info("synth: rendering {} frames of {} ({}x{}) into {}", spec.frames, o.scene.string(),
                spec.camera.width(), spec.camera.height(), o.out.string());
   Progress progress("synth", static_cast<std::size_t>(spec.frames));
   synth::SynthOptions options;
-  options.contact_sheet = o.contact_sheet;
+  options.contact_sheet = staged.staged(o.contact_sheet);
   options.contact_sheet_frames = o.sheet_frames;
-  options.progress = [&progress](int done) { progress.update(static_cast<std::size_t>(done)); };
-  const synth::SynthSummary summary = synth::synthesize_sequence(spec, o.out, options);
+  const InterruptGuard interrupts;
+  options.progress = [&progress](int done) {
+    if (interrupt_requested()) throw Interrupted{};
+    progress.update(static_cast<std::size_t>(done));
+  };
+  synth::SynthSummary summary;
+  try {
+    summary = synth::synthesize_sequence(spec, staged.path(), options);
+  } catch (const Interrupted&) {
+    progress.finish();
+    std::fprintf(stderr, "facadeslam: synth interrupted: %s left as it was\n", o.out.string().c_str());
+    throw CLI::RuntimeError(kExitInterrupted);
+  }
+  staged.commit();
   progress.finish();
   std::printf("synth: %d frames in %.1f s (%.1f frames/s, %s) -> %s\n", summary.frames, summary.seconds,
               summary.frames / summary.seconds, summary.renderer.c_str(), o.out.string().c_str());
@@ -66,7 +104,7 @@ void add_synth_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "synth", "Render a synthetic street sequence from real facade photos: colour, labels, depth, ground truth");
   cmd->add_option("--scene", o->scene, "Scene YAML file (configs/scenes/*.yaml)")->required();
-  cmd->add_option("--out", o->out, "Output folder (created; frames of an earlier run there are replaced)")
+  cmd->add_option("--out", o->out, "Output folder (replaced as a whole at the end: a new or empty folder, or an earlier synth output)")
       ->required();
   cmd->add_option("--frames", o->frames, "Number of frames (overrides the scene's `frames`)")
       ->check(CLI::Range(1, 1000000));

@@ -8,8 +8,9 @@
 
 namespace facadeslam::apps {
 
-// Throws Error naming --genome when the value is neither a file nor a
-// genome string.
+// Throws CLI::ValidationError (a bad command line, exit code 2) naming
+// --genome when the value is neither a file nor a valid genome string, and
+// Error (exit code 1) for a genome file that does not parse.
 semantics::Genome resolve_genome(const std::string& value);
 
 }  // namespace facadeslam::apps

@@ -1,6 +1,7 @@
 // facadeslam: one command, several subcommands (replay, synth, train,
 // evaluate, calibrate, render-map). Errors end the program with one line on
-// stderr and a non-zero exit code; never a stack trace.
+// stderr and a non-zero exit code; never a stack trace, never a hostile
+// file's raw bytes (printable() escapes them).
 #include <cstdio>
 #include <exception>
 
@@ -44,13 +45,13 @@ int main(int argc, char** argv) {
     return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "facadeslam: %s (see --help)\n", e.what());
+    std::fprintf(stderr, "facadeslam: %s (see --help)\n", printable(e.what()).c_str());
     return apps::kExitUsage;
   } catch (const Error& e) {
-    std::fprintf(stderr, "facadeslam: error: %s\n", e.what());
+    std::fprintf(stderr, "facadeslam: error: %s\n", printable(e.what()).c_str());
     return apps::kExitError;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "facadeslam: unexpected error: %s\n", e.what());
+    std::fprintf(stderr, "facadeslam: unexpected error: %s\n", printable(e.what()).c_str());
     return apps::kExitError;
   }
   return apps::kExitOk;

@@ -1,5 +1,8 @@
 #include "sequences/image_decoding.hpp"
 
+#include <algorithm>
+#include <cstring>
+#include <fstream>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
@@ -25,7 +28,32 @@ std::string depth_name(int depth) {
 
 }  // namespace
 
+namespace {
+
+// A PNG must end with its IEND chunk and a JPEG with its EOI marker (within
+// the last KiB: some writers append a few bytes). A file cut short is
+// corrupt without asking the decoder, which would also print libpng's or
+// libjpeg's own line ("libpng error: Read Error") on stderr.
+bool truncated_png_or_jpeg(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[4] = {};
+  if (!in.read(head, sizeof head)) return false;
+  const bool png = std::memcmp(head, "\x89PNG", 4) == 0;
+  const bool jpeg = static_cast<unsigned char>(head[0]) == 0xFF && static_cast<unsigned char>(head[1]) == 0xD8;
+  if (!png && !jpeg) return false;
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff tail_size = std::min<std::streamoff>(size, 1024);
+  std::string tail(static_cast<std::size_t>(tail_size), '\0');
+  in.seekg(size - tail_size);
+  if (!in.read(tail.data(), tail_size)) return true;
+  return png ? tail.find("IEND") == std::string::npos : tail.find("\xFF\xD9") == std::string::npos;
+}
+
+}  // namespace
+
 std::optional<cv::Mat> read_image_bgr8(const std::filesystem::path& path) {
+  if (truncated_png_or_jpeg(path)) return std::nullopt;
   cv::Mat decoded;
   try {
     // UNCHANGED keeps 16-bit and alpha so that we convert them ourselves,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "core/util/error.hpp"
 
@@ -77,9 +78,40 @@ void ConfigNode::fail(const std::string& key, const std::string& expected, const
 
 bool ConfigNode::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
 
+namespace {
+
+// Levenshtein distance, for "is 'sede' a misspelling of 'seed'?".
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
 YAML::Node ConfigNode::required(const std::string& key) const {
   const YAML::Node value = node_[key];
-  if (!value) fail(key, "a value (required key is missing)");
+  if (!value) {
+    // A key of this mapping that nothing reads and is spelt almost like
+    // the missing one is named: the typo is the likely cause.
+    for (const auto& entry : node_) {
+      const std::string present = entry.first.Scalar();
+      if (!read_keys_->count(present) && edit_distance(present, key) <= 2) {
+        std::string what = "a value (required key is missing; is '";
+        fail(key, what.append(present).append("' a misspelling of it?)"));
+      }
+    }
+    fail(key, "a value (required key is missing)");
+  }
   read_keys_->insert(key);
   return value;
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <filesystem>
+#include <string_view>
 
 namespace facadeslam {
 
@@ -16,5 +17,12 @@ class Error : public std::runtime_error {
 
 // "<path>: <what>" — every message about a file starts with the file.
 [[noreturn]] void fail_file(const std::filesystem::path& path, const std::string& what);
+
+// `text` fit for a one-line message on a terminal: control bytes, DEL and
+// bytes that are not valid UTF-8 (a hostile file's raw bytes) as \xNN;
+// valid UTF-8 (a path with umlauts) is kept.
+std::string printable(std::string_view text);
+// printable(text) in single quotes.
+std::string quoted_for_message(std::string_view text);
 
 }  // namespace facadeslam

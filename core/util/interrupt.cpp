@@ -1,6 +1,10 @@
 #include "core/util/interrupt.hpp"
 
 #include <csignal>
+#include <cstring>
+#include <dirent.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace facadeslam {
 namespace {
@@ -8,12 +12,57 @@ namespace {
 volatile std::sig_atomic_t g_requested = 0;
 struct sigaction g_previous_int {}, g_previous_term {};
 
+// The abort clean-up folder: an absolute path, valid while g_cleanup_set.
+char g_cleanup[4096];
+volatile std::sig_atomic_t g_cleanup_set = 0;
+// Inside AbortDeferral: the signal that came meanwhile (0: none).
+volatile std::sig_atomic_t g_deferring = 0, g_deferred_signal = 0;
+
+// Removes `name` (relative to `dir_fd`, or absolute) and everything below it
+// with async-signal-safe calls only (no allocation, no stdio).
+void remove_tree(int dir_fd, const char* name, int depth) {
+  if (::unlinkat(dir_fd, name, 0) == 0 || depth > 32) return;
+  const int fd = ::openat(dir_fd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return;
+  alignas(8) char buffer[4096];
+  // Entries removed while listing may hide others: list again until a pass
+  // removes nothing.
+  for (int pass = 0; pass < 64; ++pass) {
+    bool removed = false;
+    ::lseek(fd, 0, SEEK_SET);
+    for (;;) {
+      const ssize_t n = ::getdents64(fd, buffer, sizeof buffer);
+      if (n <= 0) break;
+      for (ssize_t offset = 0; offset < n;) {
+        const auto* entry = reinterpret_cast<const struct dirent64*>(buffer + offset);
+        offset += entry->d_reclen;
+        if (std::strcmp(entry->d_name, ".") == 0 || std::strcmp(entry->d_name, "..") == 0) continue;
+        remove_tree(fd, entry->d_name, depth + 1);
+        removed = true;
+      }
+    }
+    if (!removed) break;
+  }
+  ::close(fd);
+  ::unlinkat(dir_fd, name, AT_REMOVEDIR);
+}
+
+[[noreturn]] void die_of(int signal) {
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+  ::_exit(128 + signal);
+}
+
 extern "C" void on_interrupt(int signal) {
   if (g_requested) {
-    // The second one: now, as if we had never caught it.
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
-    return;
+    // The second one: now, as if we had never caught it (once a folder
+    // being moved into place is there).
+    if (g_deferring) {
+      g_deferred_signal = signal;
+      return;
+    }
+    if (g_cleanup_set) remove_tree(AT_FDCWD, g_cleanup, 0);
+    die_of(signal);
   }
   g_requested = 1;
 }
@@ -35,5 +84,25 @@ InterruptGuard::~InterruptGuard() {
 }
 
 bool interrupt_requested() { return g_requested != 0; }
+
+void set_abort_cleanup_folder(const std::filesystem::path& folder) {
+  g_cleanup_set = 0;
+  if (folder.empty()) return;
+  std::error_code ec;
+  const std::string absolute = std::filesystem::absolute(folder, ec).string();
+  if (ec || absolute.size() >= sizeof g_cleanup) return;
+  std::memcpy(g_cleanup, absolute.c_str(), absolute.size() + 1);
+  g_cleanup_set = 1;
+}
+
+AbortDeferral::AbortDeferral() {
+  g_deferred_signal = 0;
+  g_deferring = 1;
+}
+
+AbortDeferral::~AbortDeferral() {
+  g_deferring = 0;
+  if (const int signal = g_deferred_signal; signal != 0) die_of(signal);
+}
 
 }  // namespace facadeslam

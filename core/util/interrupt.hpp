@@ -4,6 +4,8 @@
 // optimiser after the current generation), which then finishes what it has
 // and writes complete outputs; a second one ends the process at once with
 // the signal's default action.
+#include <filesystem>
+
 namespace facadeslam {
 
 // Installs the handlers for the life of the guard (restores the previous
@@ -18,6 +20,23 @@ class InterruptGuard {
 
 // A stop was asked for (since the guard was made).
 bool interrupt_requested();
+
+// A folder that a second signal removes before it ends the process (a
+// staged output folder, core/util/staged_folder.hpp), so that an abort
+// leaves no half-written folder behind. One at a time; an empty path
+// clears it. The removal in the handler uses only async-signal-safe calls.
+void set_abort_cleanup_folder(const std::filesystem::path& folder);
+
+// While a staged folder is being moved into place, a second signal waits
+// for it to finish (the rename and the removal of the old folder), then
+// ends the process: the target is the old or the new folder, never neither.
+class AbortDeferral {
+ public:
+  AbortDeferral();
+  ~AbortDeferral();  // ends the process now if a signal came meanwhile
+  AbortDeferral(const AbortDeferral&) = delete;
+  AbortDeferral& operator=(const AbortDeferral&) = delete;
+};
 
 // The conventional exit code of a command stopped by SIGINT (128 + 2).
 inline constexpr int kExitInterrupted = 130;

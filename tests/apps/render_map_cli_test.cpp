@@ -98,7 +98,7 @@ TEST_F(RenderMapCli, RejectsABadPlyWithOneLineAndWritesNothing) {
 TEST_F(RenderMapCli, RejectsBadOptionsWithOneLine) {
   const std::string base = "render-map --map-ply " + quoted(ply()) + " ";
   const auto size = run(base + "--out " + quoted(png()) + " --size 320by200");
-  EXPECT_EQ(size.exit_code, 1);
+  EXPECT_EQ(size.exit_code, 2);  // a bad command line (README)
   EXPECT_THAT(size.err, HasSubstr("--size: expected WIDTHxHEIGHT"));
   const auto not_png = run(base + "--out " + quoted(dir_ / "map.jpg"));
   EXPECT_EQ(not_png.exit_code, 1);

@@ -1,0 +1,393 @@
+// Issue 20's bad-input corpus, run through the built `facadeslam` as a user
+// runs it: every case gives its exit code, one line on stderr naming what
+// was wrong (never a hostile file's raw bytes), and leaves the outputs as
+// they were (absent, or an earlier run's folder untouched, and no hidden
+// temporary file or folder anywhere in the case's folder).
+//
+// The raw files are in tests/bad_input/<parser>/ (README.md there); what
+// would be large (frames, a dataset, a flipped byte in the shipped model)
+// is made here, in one shared folder per test program run.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "tests/apps/cli_run.hpp"
+#include "tests/semantics/synthetic_facades.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace facadeslam {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+// What a failed run must leave behind in its case folder.
+enum class Outputs {
+  absent,     // {out} does not exist
+  untouched,  // {old} (an earlier replay's output) holds exactly what it held
+};
+
+struct Case {
+  const char* name;
+  const char* arguments;  // with {corpus} {case} {seq} {cam} {data} {out} {old} {file} placeholders
+  int exit_code;
+  const char* message;  // a substring of stderr (or, for exit 0, of stderr's warning)
+  Outputs outputs = Outputs::absent;
+  const char* stdout_message = "";  // a substring of stdout
+};
+
+// Placeholders: {corpus} this folder in the source tree, {shared} the shared
+// generated inputs, {seq} a 3-frame TUM sequence (640x480), {cam} its
+// camera, {data} a tiny LabelMeFacade-layout dataset, {out} an output
+// folder that must stay absent, {old} an earlier replay's output folder,
+// {file} a regular file, {case} the case's own folder.
+const Case kCases[] = {
+    // rgb.txt lists
+    {"rgb_txt_garbage_bytes", "replay {corpus}/rgb_txt/garbage_bytes.txt --camera {cam} --out {out}", 1,
+     "garbage_bytes.txt: line 1: '\\x01\\xff\\xfeGARBAGE\\x1b[31m' is not a timestamp"},
+    {"rgb_txt_three_fields", "replay {corpus}/rgb_txt/three_fields.txt --camera {cam} --out {out}", 1,
+     "three_fields.txt: line 2: found 3 fields"},
+    {"rgb_txt_one_field", "replay {corpus}/rgb_txt/one_field.txt --camera {cam} --out {out}", 1,
+     "one_field.txt: line 1: found 1 fields"},
+    {"rgb_txt_nan_timestamp", "replay {corpus}/rgb_txt/nan_timestamp.txt --camera {cam} --out {out}", 1,
+     "nan_timestamp.txt: line 1"},
+    {"rgb_txt_decreasing", "replay {corpus}/rgb_txt/decreasing.txt --camera {cam} --out {out}", 1,
+     "decreasing.txt: line 2"},
+    {"rgb_txt_duplicate_timestamp", "replay {corpus}/rgb_txt/duplicate_timestamp.txt --camera {cam} --out {out}", 1,
+     "duplicate_timestamp.txt: line 2"},
+    {"rgb_txt_missing_image", "replay {corpus}/rgb_txt/missing_image.txt --camera {cam} --out {out}", 1,
+     "does-not-exist.png does not exist"},
+    {"rgb_txt_comments_only", "replay {corpus}/rgb_txt/comments_only.txt --camera {cam} --out {out}", 1,
+     "comments_only.txt: no images found"},
+    {"rgb_txt_empty", "replay {corpus}/rgb_txt/empty.txt --camera {cam} --out {out}", 1, "empty.txt: no images found"},
+    // Frames (made here): zero-byte, truncated, of another size; a corrupt
+    // frame skipped is counted in the summary.
+    {"frames_zero_byte_stop", "replay {shared}/zero_byte --camera {cam} --on-corrupt stop --out {out}", 1,
+     "000001.png"},
+    {"frames_truncated_stop", "replay {shared}/truncated --camera {cam} --on-corrupt stop --out {out}", 1,
+     "000001.png"},
+    {"frames_mixed_size", "replay {shared}/mixed_size --camera {cam} --semantics off --out {out}", 1,
+     "image is 320x240 but the sequence's first frame"},
+    {"frames_mixed_size_keeps_the_old_output",
+     "replay {shared}/mixed_size --camera {cam} --semantics off --out {old}", 1, "image is 320x240",
+     Outputs::untouched},
+    {"frames_corrupt_skipped_are_counted",
+     "replay {shared}/zero_byte --camera {cam} --semantics off --sync --out {case}/counted", 3,
+     "never initialised", Outputs::absent, "1 corrupt frames skipped"},
+    // synth.json against what the folder holds (point 2)
+    {"sequence_manifest_mismatch", "replay {shared}/mixed_manifest --semantics off --out {out}", 1,
+     "synth.json: says 5 frames but"},
+    // camera YAML (point 5: focal bounds)
+    {"camera_missing_fx", "replay {seq} --camera {corpus}/camera_yaml/missing_fx.yaml --out {out}", 1,
+     "missing_fx.yaml"},
+    {"camera_tiny_fx", "replay {seq} --camera {corpus}/camera_yaml/tiny_fx.yaml --out {out}", 1, "tiny_fx.yaml"},
+    {"camera_huge_fx", "replay {seq} --camera {corpus}/camera_yaml/huge_fx.yaml --out {out}", 1, "huge_fx.yaml"},
+    {"camera_nan_fx", "replay {seq} --camera {corpus}/camera_yaml/nan_fx.yaml --out {out}", 1, "nan_fx.yaml"},
+    {"camera_negative_width", "replay {seq} --camera {corpus}/camera_yaml/negative_width.yaml --out {out}", 1,
+     "negative_width.yaml"},
+    {"camera_huge_size", "replay {seq} --camera {corpus}/camera_yaml/huge_size.yaml --out {out}", 1,
+     "huge_size.yaml"},
+    {"camera_unknown_model", "replay {seq} --camera {corpus}/camera_yaml/unknown_model.yaml --out {out}", 1,
+     "fisheye"},
+    {"camera_short_distortion", "replay {seq} --camera {corpus}/camera_yaml/short_distortion.yaml --out {out}", 1,
+     "short_distortion.yaml"},
+    {"camera_text_fx", "replay {seq} --camera {corpus}/camera_yaml/text_fx.yaml --out {out}", 1, "text_fx.yaml"},
+    {"camera_unknown_key", "replay {seq} --camera {corpus}/camera_yaml/unknown_key.yaml --out {out}", 1, "fz"},
+    {"camera_not_yaml", "replay {seq} --camera {corpus}/camera_yaml/not_yaml.yaml --out {out}", 1, "not_yaml.yaml"},
+    {"camera_unbalanced", "replay {seq} --camera {corpus}/camera_yaml/unbalanced.yaml --out {out}", 1,
+     "unbalanced.yaml"},
+    {"camera_empty", "replay {seq} --camera {corpus}/camera_yaml/empty.yaml --out {out}", 1, "empty.yaml"},
+    {"camera_other_size", "replay {seq} --camera {corpus}/camera_yaml/other_size_320x240.yaml --out {out}", 1,
+     "image is 640x480 but the camera"},
+    // SLAM and semantics config YAML
+    {"slam_config_unknown_key", "replay {seq} --config {corpus}/slam_config/unknown_key.yaml --out {out}", 1,
+     "fast_thresholdz"},
+    {"slam_config_bad_type", "replay {seq} --config {corpus}/slam_config/bad_type.yaml --out {out}", 1,
+     "bad_type.yaml"},
+    {"slam_config_out_of_range", "replay {seq} --config {corpus}/slam_config/out_of_range.yaml --out {out}", 1,
+     "out_of_range.yaml"},
+    {"slam_config_not_a_map", "replay {seq} --config {corpus}/slam_config/not_a_map.yaml --out {out}", 1,
+     "not_a_map.yaml"},
+    {"slam_config_not_yaml", "replay {seq} --config {corpus}/slam_config/not_yaml.yaml --out {out}", 1,
+     "not_yaml.yaml"},
+    {"semantics_config_unknown_key",
+     "replay {seq} --semantics-config {corpus}/semantics_config/unknown_key.yaml --out {out}", 1, "modle"},
+    {"semantics_config_unknown_class",
+     "replay {seq} --semantics-config {corpus}/semantics_config/unknown_class.yaml --out {out}", 1, "spaceship"},
+    {"semantics_config_not_yaml",
+     "replay {seq} --semantics-config {corpus}/semantics_config/not_yaml.yaml --out {out}", 1, "not_yaml.yaml"},
+    // Map files (hostile values with a valid checksum: tests/core/map/map_io_test.cpp)
+    {"map_empty", "replay {seq} --load-map {corpus}/map/empty.fslmap --out {out}", 1, "empty.fslmap"},
+    {"map_random", "replay {seq} --load-map {corpus}/map/random.fslmap --out {out}", 1, "random.fslmap"},
+    {"map_bad_magic", "replay {seq} --load-map {corpus}/map/bad_magic.fslmap --out {out}", 1, "bad magic"},
+    {"map_version_99", "replay {seq} --load-map {corpus}/map/version_99.fslmap --out {out}", 1, "version 99"},
+    {"map_truncated_header", "replay {seq} --load-map {corpus}/map/truncated_header.fslmap --out {out}", 1,
+     "truncated_header.fslmap"},
+    {"map_is_a_folder", "replay {seq} --load-map {corpus}/map --out {out}", 1, "expected a map file"},
+    // Model files
+    {"model_empty", "replay {seq} --model {corpus}/model/empty.fsmodel --out {out}", 1, "empty.fsmodel"},
+    {"model_random", "replay {seq} --model {corpus}/model/random.fsmodel --out {out}", 1,
+     "not a facadeslam model file"},
+    {"model_bad_magic", "replay {seq} --model {corpus}/model/bad_magic.fsmodel --out {out}", 1,
+     "not a facadeslam model file"},
+    {"model_version_99", "replay {seq} --model {corpus}/model/version_99.fsmodel --out {out}", 1,
+     "model format version 99"},
+    {"model_truncated", "replay {seq} --model {corpus}/model/truncated.fsmodel --out {out}", 1,
+     "truncated or damaged model file"},
+    {"model_huge_payload", "replay {seq} --model {corpus}/model/huge_payload.fsmodel --out {out}", 1,
+     "is implausible"},
+    {"model_flipped_byte", "replay {seq} --model {shared}/flipped_byte.fsmodel --out {out}", 1,
+     "flipped_byte.fsmodel"},
+    {"model_evaluate_labels", "evaluate labels --dataset {data} --model {corpus}/model/random.fsmodel", 1,
+     "not a facadeslam model file"},
+    // Scene YAML (synth): nothing written
+    {"scene_not_yaml", "synth --scene {corpus}/scene_yaml/not_yaml.yaml --out {out}", 1, "not_yaml.yaml"},
+    {"scene_unknown_key", "synth --scene {corpus}/scene_yaml/unknown_key.yaml --out {out}", 1, "sede"},
+    {"scene_missing_seed", "synth --scene {corpus}/scene_yaml/missing_seed.yaml --out {out}", 1,
+     "key 'seed': expected a value"},
+    {"scene_negative_frames", "synth --scene {corpus}/scene_yaml/negative_frames.yaml --out {out}", 1,
+     "negative_frames.yaml"},
+    {"scene_missing_camera", "synth --scene {corpus}/scene_yaml/missing_camera.yaml --out {out}", 1,
+     "no-such-camera.yaml"},
+    {"scene_empty", "synth --scene {corpus}/scene_yaml/empty.yaml --out {out}", 1, "empty.yaml"},
+    {"scene_missing", "synth --scene {case}/none.yaml --out {out}", 1, "none.yaml: no such file"},
+    // Trajectories (point 5)
+    {"trajectory_all_equal_timestamps",
+     "evaluate trajectory --gt {corpus}/trajectory/all_equal_timestamps.txt --est {corpus}/trajectory/good.txt", 1,
+     "all_equal_timestamps.txt"},
+    // A repeated line is read once, with a warning (exit 0).
+    {"trajectory_duplicate_line",
+     "evaluate trajectory --gt {corpus}/trajectory/duplicate_line.txt --est {corpus}/trajectory/good.txt", 0,
+     "duplicate_line.txt: 1 repeated line(s) read once"},
+    {"trajectory_garbage_bytes",
+     "evaluate trajectory --gt {corpus}/trajectory/garbage_bytes.txt --est {corpus}/trajectory/good.txt", 1,
+     "garbage_bytes.txt"},
+    {"trajectory_nan_pose",
+     "evaluate trajectory --gt {corpus}/trajectory/nan_pose.txt --est {corpus}/trajectory/good.txt", 1,
+     "nan_pose.txt"},
+    {"trajectory_zero_quaternion",
+     "evaluate trajectory --gt {corpus}/trajectory/zero_quaternion.txt --est {corpus}/trajectory/good.txt", 1,
+     "zero_quaternion.txt"},
+    {"trajectory_no_overlap",
+     "evaluate trajectory --gt {corpus}/trajectory/no_overlap.txt --est {corpus}/trajectory/good.txt", 1,
+     "have a ground-truth pose within"},
+    {"replay_gt_one_pose", "replay {seq} --gt {corpus}/trajectory/one_pose.txt --out {out}", 1, "one_pose.txt"},
+    {"replay_gt_garbage", "replay {seq} --gt {corpus}/trajectory/garbage_bytes.txt --out {out}", 1,
+     "garbage_bytes.txt"},
+    {"replay_gt_missing", "replay {seq} --gt {case}/missing.txt --out {out}", 1, "missing.txt"},
+    // Genome files (exit 1) and strings (a bad command line, exit 2)
+    {"genome_file_bad_character", "train --dataset {data} --genome {corpus}/genome/bad_character.txt --out {out}/m.fsmodel",
+     1, "bad_character.txt"},
+    {"genome_file_too_short", "train --dataset {data} --genome {corpus}/genome/too_short.txt --out {out}/m.fsmodel", 1,
+     "too_short.txt"},
+    {"genome_file_binary", "train --dataset {data} --genome {corpus}/genome/binary.txt --out {out}/m.fsmodel", 1,
+     "binary.txt"},
+    {"genome_file_bad_json", "train --dataset {data} --genome {corpus}/genome/bad.json --out {out}/m.fsmodel", 1,
+     "bad.json"},
+    {"genome_string_short", "train --dataset {data} --genome 0101 --out {out}/m.fsmodel", 2, "--genome"},
+    {"genome_string_neither", "evaluate labels --dataset {data} --genome nonsense.txt", 2, "neither a genome file"},
+    {"genome_string_invariance", "evaluate invariance --images {data}/images --genome 0101", 2, "--genome"},
+    // Labels (LabelMeFacade layout)
+    {"labels_missing_png", "evaluate labels --dataset {shared}/missing_label", 1, "labels"},
+    {"labels_unknown_colour_warns", "evaluate labels --dataset {shared}/unknown_colour --json {case}/report.json", 0,
+     "lie on a label colour of no class"},
+    // The command line (point 6): exit code 2, one short line
+    {"cli_stride_zero", "replay {seq} --stride 0 --out {out}", 2, "--stride"},
+    {"cli_start_negative", "replay {seq} --start -5 --out {out}", 2, "--start"},
+    {"cli_limit_negative", "replay {seq} --limit=-1 --out {out}", 2, "--limit"},
+    {"cli_resolution_small", "synth --scene {root}/configs/scenes/demo.yaml --resolution 12x12 --out {out}", 2,
+     "--resolution"},
+    {"cli_resolution_text", "synth --scene {root}/configs/scenes/demo.yaml --resolution big --out {out}", 2,
+     "--resolution"},
+    {"cli_invariance_step_zero", "evaluate invariance --images {data}/images --step 0", 2, "--step"},
+    {"cli_invariance_margin_negative", "evaluate invariance --images {data}/images --margin -1", 2, "--margin"},
+    {"cli_render_map_size", "render-map --map-ply {file} --out {out}/x.png --size 320by200", 2, "--size"},
+    // Output locations checked before the work (point 1)
+    {"out_replay_is_a_file", "replay {seq} --out {file}", 1, "it is a file"},
+    {"out_replay_folder_of_other_files", "replay {seq} --semantics off --out {corpus}", 1,
+     "not an earlier replay output"},
+    {"out_synth_is_a_file", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {file}", 1,
+     "it is a file"},
+    {"out_synth_folder_of_other_files", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {old}", 1,
+     "not an earlier synth output", Outputs::untouched},
+    {"out_labels_json_is_a_folder", "evaluate labels --dataset {data} --json {case}", 1, "is a folder"},
+    {"out_labels_confusion_unwritable",
+     "evaluate labels --dataset {data} --confusion {file}/cm.png --model-out {out}/m.fsmodel", 1, "cm.png"},
+    {"out_labels_model_out_unwritable", "evaluate labels --dataset {data} --model-out {file}/m.fsmodel", 1,
+     "m.fsmodel"},
+    {"out_invariance_plot_unwritable", "evaluate invariance --images {data}/images --plot {file}/p.png", 1, "p.png"},
+    {"out_calibrate_plot_unwritable",
+     "calibrate --images {data}/images --out {out}/camera.yaml --plot {file}/p.png", 1, "p.png"},
+    {"out_render_map_unwritable", "render-map --map-ply {file} --out {file}/x.png", 1, "x.png"},
+    {"out_train_unwritable", "train --dataset {data} --out {file}/m.fsmodel", 1, "m.fsmodel"},
+    {"out_optimise_is_a_file", "optimise --dataset {data} --out {file}", 1, "it is a file"},
+};
+
+// A flat random texture (FAST finds corners; no parallax, so never initialised).
+cv::Mat texture(int width, int height, unsigned seed) {
+  cv::Mat noise(height / 8, width / 8, CV_8UC3);
+  cv::RNG rng(seed);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat image;
+  cv::resize(noise, image, {width, height}, 0, 0, cv::INTER_CUBIC);
+  return image;
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string frame_name(int i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d.png", i);
+  return name;
+}
+
+// A TUM sequence of `frames` frames in `folder` (rgb/, rgb.txt, camera.yaml).
+void write_sequence(const fs::path& folder, int frames) {
+  fs::create_directories(folder / "rgb");
+  std::string list = "# timestamp filename\n";
+  for (int i = 0; i < frames; ++i) {
+    cv::imwrite((folder / "rgb" / frame_name(i)).string(), texture(640, 480, 7));
+    list.append(std::to_string(i / 30.0)).append(" rgb/").append(frame_name(i)).append("\n");
+  }
+  write_bytes(folder / "rgb.txt", list);
+  fs::copy_file(test::source_dir() / "configs" / "camera" / "synthetic-640x480.yaml", folder / "camera.yaml");
+}
+
+// The inputs made once for all cases.
+class Shared {
+ public:
+  Shared() {
+    write_sequence(root() / "seq", 3);
+    // Image folders whose frame 1 is zero bytes, truncated, or of another size.
+    for (const char* name : {"zero_byte", "truncated", "mixed_size"})
+      for (int i = 0; i < 3; ++i) {
+        fs::create_directories(root() / name);
+        cv::imwrite((root() / name / frame_name(i)).string(), texture(640, 480, 7));
+      }
+    write_bytes(root() / "zero_byte" / frame_name(1), "");
+    const std::string png = test::read_file_text(root() / "truncated" / frame_name(0));
+    write_bytes(root() / "truncated" / frame_name(1), png.substr(0, png.size() / 3));
+    cv::imwrite((root() / "mixed_size" / frame_name(1)).string(), texture(320, 240, 7));
+    // A sequence whose synth.json counts other frames than its rgb.txt lists.
+    write_sequence(root() / "mixed_manifest", 3);
+    write_bytes(root() / "mixed_manifest" / "synth.json", "{\"generator\": \"facadeslam synth\", \"frames\": 5}\n");
+    // The shipped model with one byte flipped mid-file.
+    std::string model = test::read_file_text(test::source_dir() / "models" / "default.fsmodel");
+    model[model.size() / 2] = static_cast<char>(~model[model.size() / 2]);
+    write_bytes(root() / "flipped_byte.fsmodel", model);
+    // Tiny LabelMeFacade-layout datasets: a good one, one missing a label PNG,
+    // one with label pixels of no class colour.
+    semantics::test_util::write_synthetic_dataset(root() / "data", 3, 2);
+    semantics::test_util::write_synthetic_dataset(root() / "missing_label", 3, 2);
+    for (const auto& entry : fs::directory_iterator(root() / "missing_label" / "labels")) {
+      fs::remove(entry.path());
+      break;
+    }
+    semantics::test_util::write_synthetic_dataset(root() / "unknown_colour", 3, 2);
+    for (const auto& entry : fs::directory_iterator(root() / "unknown_colour" / "labels")) {
+      cv::Mat label = cv::imread(entry.path().string(), cv::IMREAD_COLOR);
+      label(cv::Rect(0, 0, label.cols / 2, label.rows)).setTo(cv::Scalar(255, 255, 255));
+      cv::imwrite(entry.path().string(), label);
+    }
+  }
+  const fs::path& root() const { return dir_.path(); }
+
+ private:
+  test::TempDir dir_;
+};
+
+Shared* g_shared = nullptr;
+
+class BadInput : public ::testing::TestWithParam<Case> {
+ public:
+  static void SetUpTestSuite() { g_shared = new Shared; }
+  static void TearDownTestSuite() {
+    delete g_shared;
+    g_shared = nullptr;
+  }
+};
+
+std::string expand(std::string text, const std::map<std::string, fs::path>& places) {
+  for (const auto& [key, path] : places)
+    for (std::size_t at; (at = text.find(key)) != std::string::npos;)
+      text.replace(at, key.size(), test::shell_quoted(path.string()));
+  return text;
+}
+
+// Every file below `folder` with its content.
+std::map<std::string, std::string> snapshot(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    files[fs::relative(entry.path(), folder).string()] =
+        entry.is_regular_file() ? test::read_file_text(entry.path()) : std::string("<folder>");
+  return files;
+}
+
+TEST_P(BadInput, FailsWithOneClearLineAndLeavesTheOutputs) {
+  const Case& c = GetParam();
+  const test::TempDir dir;
+  const fs::path scratch = dir / "scratch", old = dir / "old";
+  fs::create_directories(scratch);
+  test::write_text(dir / "a-file", "not a folder\n");
+  fs::create_directories(old);
+  test::write_text(old / "report.json", "{\"old\": true}\n");
+  test::write_text(old / "trajectory.txt", "0 0 0 0 0 0 0 1\n");
+  const auto before = snapshot(old);
+  const fs::path corpus = test::source_dir() / "tests" / "bad_input";
+  const std::map<std::string, fs::path> places = {
+      {"{corpus}", corpus},
+      {"{shared}", g_shared->root()},
+      {"{seq}", g_shared->root() / "seq"},
+      {"{cam}", g_shared->root() / "seq" / "camera.yaml"},
+      {"{data}", g_shared->root() / "data"},
+      {"{root}", test::source_dir()},
+      {"{out}", dir / "out"},
+      {"{old}", old},
+      {"{file}", dir / "a-file"},
+      {"{case}", dir.path()},
+  };
+  // -q: only warnings and errors on stderr.
+  std::string arguments = "-q ";
+  arguments.append(expand(c.arguments, places));
+  const test::CliResult r = test::run_cli(FACADESLAM_BINARY, arguments, scratch);
+
+  EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(c.message));
+  EXPECT_THAT(r.out, HasSubstr(c.stdout_message));
+  if (c.exit_code == 1 || c.exit_code == 2) {
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_LT(r.err.size(), 600u) << r.err;
+  }
+  // No raw control bytes from hostile files on the terminal.
+  EXPECT_EQ(std::count_if(r.err.begin(), r.err.end(),
+                          [](char ch) { return static_cast<unsigned char>(ch) < 0x20 && ch != '\n'; }),
+            0)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out")) << "an output was left behind";
+  if (c.outputs == Outputs::untouched) {
+    EXPECT_EQ(snapshot(old), before) << "the earlier output folder was changed";
+  }
+  // No hidden temporary file or folder anywhere (staging folders, .tmp files).
+  for (const auto& entry : fs::recursive_directory_iterator(dir.path()))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << "left behind: " << entry.path();
+  for (const auto& entry : fs::directory_iterator(g_shared->root()))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << "left behind: " << entry.path();
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, BadInput, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace facadeslam
