@@ -46,6 +46,8 @@ GaOptions load_ga_options(const std::filesystem::path& path) {
       root.get_double("interchange_probability", Range::closed(0, 1), o.interchange_probability);
   o.reverse_probability = root.get_double("reverse_probability", Range::closed(0, 1), o.reverse_probability);
   o.elites = root.get_int("elites", Range::closed(0, 100000), o.elites);
+  o.initial_activation_density =
+      root.get_double("initial_activation_density", Range::closed(0.001, 1), o.initial_activation_density);
   o.scaling_multiple = root.get_double("scaling_multiple", Range::closed(1, 100), o.scaling_multiple);
   o.plateau_generations = root.get_int("plateau_generations", Range::closed(0, 100000), o.plateau_generations);
   o.plateau_tolerance = root.get_double("plateau_tolerance", Range::closed(0, 1), o.plateau_tolerance);

@@ -42,6 +42,12 @@ struct GaOptions {
   double interchange_probability = 0.1;  // per child: two random bits swap places
   double reverse_probability = 0.1;      // per child: a bit and its neighbour swap
   int elites = 2;                        // best genomes copied unchanged
+  // Share of the activation bits set in a random first-generation genome
+  // (the parameter fields are always uniform). 0.5 is an unbiased draw with
+  // ~92 of 185 values on; a fast descriptor has a few, which bit flips at
+  // P_M = 0.01 reach only after many generations, so a search for speed
+  // starts sparse.
+  double initial_activation_density = 0.5;
   // Linear scaling (Goldberg): the best scaled fitness is this multiple of
   // the mean, the mean is kept, nothing goes below zero.
   double scaling_multiple = 2.0;

@@ -16,9 +16,17 @@ namespace {
 
 constexpr int kCheckpointVersion = 1;
 
-Genome random_genome(GaRandom& rng) {
+Genome random_genome(GaRandom& rng, double activation_density) {
   Genome::Bits bits;
-  for (int i = 0; i < Genome::kBits; ++i) bits.set(static_cast<std::size_t>(i), (rng() >> 63) != 0);
+  // 0.5: one random bit per draw (the draws of runs made before the density
+  // existed, so their seeds give the same runs).
+  const bool unbiased = activation_density == 0.5;
+  for (int i = 0; i < Genome::kBits; ++i) {
+    const bool parameter = i < Genome::kParameterBits;
+    const bool on = parameter || unbiased ? (rng() >> 63) != 0
+                                          : static_cast<double>(rng() >> 11) * 0x1.0p-53 < activation_density;
+    bits.set(static_cast<std::size_t>(i), on);
+  }
   return Genome(bits);
 }
 
@@ -42,7 +50,7 @@ GeneticAlgorithm::GeneticAlgorithm(const GaOptions& options, std::uint64_t seed,
     : options_(options), rng_(seed) {
   const auto n = static_cast<std::size_t>(options_.population);
   for (std::size_t i = 0; i < std::min(n, seeds.size()); ++i) population_.push_back(seeds[i]);
-  while (population_.size() < n) population_.push_back(random_genome(rng_));
+  while (population_.size() < n) population_.push_back(random_genome(rng_, options_.initial_activation_density));
 }
 
 void GeneticAlgorithm::set_objectives(std::vector<double> objectives) {

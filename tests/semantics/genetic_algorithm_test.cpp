@@ -133,6 +133,25 @@ TEST(GeneticAlgorithm, ClimbsAKnownObjectiveAndKeepsItsElites) {
     EXPECT_GE(ga.history()[i].best, ga.history()[i - 1].best);  // elitism: never worse
 }
 
+// A sparse first generation: the activation bits are on at the density, the
+// parameter fields stay uniform, the given seeds are kept as they are.
+TEST(GeneticAlgorithm, TheFirstGenerationCanStartSparse) {
+  GaOptions o;
+  o.population = 40;
+  o.initial_activation_density = 0.05;
+  GeneticAlgorithm ga(o, 3, {Genome::thesis_best()});
+  EXPECT_EQ(ga.population().front(), Genome::thesis_best());
+  double activation = 0, parameter = 0;
+  for (std::size_t g = 1; g < ga.population().size(); ++g) {
+    const Genome::Bits& bits = ga.population()[g].bits();
+    for (int i = 0; i < Genome::kBits; ++i)
+      (i < Genome::kParameterBits ? parameter : activation) += bits[static_cast<std::size_t>(i)];
+  }
+  const double genomes = static_cast<double>(ga.population().size() - 1);
+  EXPECT_NEAR(activation / (genomes * (Genome::kBits - Genome::kParameterBits)), 0.05, 0.015);
+  EXPECT_NEAR(parameter / (genomes * Genome::kParameterBits), 0.5, 0.06);
+}
+
 TEST(GeneticAlgorithm, SameSeedSameRunAndACheckpointResumesExactly) {
   GaOptions o;
   o.population = 12;
