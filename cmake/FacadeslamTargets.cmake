@@ -4,7 +4,7 @@ add_library(facadeslam_options INTERFACE)
 target_compile_options(facadeslam_options INTERFACE -Wall -Wextra -Wpedantic -Werror)
 target_include_directories(facadeslam_options INTERFACE ${PROJECT_SOURCE_DIR})
 
-if(CMAKE_UNITY_BUILD)
+if(CMAKE_UNITY_BUILD AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   # A unity build includes each .cpp into a batch file, so GCC takes a class
   # defined in a .cpp with a member of an anonymous-namespace type (a
   # pimpl's vertex struct, say) for a header-defined class and warns; in a
@@ -16,10 +16,18 @@ if(FACADESLAM_SANITIZE STREQUAL "address")
   set(_fs_san -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
 elseif(FACADESLAM_SANITIZE STREQUAL "thread")
   set(_fs_san -fsanitize=thread -fno-omit-frame-pointer)
+elseif(FACADESLAM_SANITIZE STREQUAL "fuzzer")
+  # libFuzzer's coverage hooks in every library, ASan + UBSan to turn bad
+  # memory into findings; the fuzz targets themselves link -fsanitize=fuzzer
+  # (fuzz/CMakeLists.txt). Clang only.
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "FACADESLAM_SANITIZE=fuzzer needs clang (CMAKE_CXX_COMPILER=clang++)")
+  endif()
+  set(_fs_san -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
 elseif(NOT FACADESLAM_SANITIZE STREQUAL "")
-  message(FATAL_ERROR "FACADESLAM_SANITIZE must be empty, 'address' or 'thread', not '${FACADESLAM_SANITIZE}'")
+  message(FATAL_ERROR "FACADESLAM_SANITIZE must be empty, 'address', 'thread' or 'fuzzer', not '${FACADESLAM_SANITIZE}'")
 endif()
-if(FACADESLAM_SANITIZE STREQUAL "address")
+if(FACADESLAM_SANITIZE STREQUAL "address" OR FACADESLAM_SANITIZE STREQUAL "fuzzer")
   # Eigen stops trusting malloc's 16-byte alignment when it sees ASan
   # (__SANITIZE_ADDRESS__) and frees through its own aligned header, while the
   # uninstrumented libceres allocates with plain malloc: a Ceres-allocated
