@@ -16,6 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "tests/apps/cli_run.hpp"
+#include "tests/support/smooth_texture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace facadeslam {
@@ -28,16 +29,6 @@ std::string quoted(const fs::path& p) { return test::shell_quoted(p.string()); }
 
 fs::path synthetic_camera() { return test::source_dir() / "configs" / "camera" / "synthetic-640x480.yaml"; }
 
-// A smooth random texture: FAST finds corners, so only the missing parallax
-// can stop initialisation.
-cv::Mat textured_image(int width, int height, unsigned seed) {
-  cv::Mat noise(height / 8, width / 8, CV_8UC3);
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
-  cv::Mat image;
-  cv::resize(noise, image, {width, height}, 0, 0, cv::INTER_CUBIC);
-  return image;
-}
 
 class ReplayCli : public ::testing::Test {
  protected:
@@ -63,7 +54,7 @@ class ReplayCli : public ::testing::Test {
   fs::path still_folder(const std::string& name, int count, int width, int height) {
     const fs::path folder = dir_ / name;
     fs::create_directories(folder);
-    const cv::Mat image = textured_image(width, height, 7);
+    const cv::Mat image = test::smooth_random_texture(width, height, 7);
     for (int i = 0; i < count; ++i) {
       char file[32];
       std::snprintf(file, sizeof file, "%04d.png", i);

@@ -22,6 +22,7 @@
 
 #include "tests/apps/cli_run.hpp"
 #include "tests/semantics/synthetic_facades.hpp"
+#include "tests/support/smooth_texture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace facadeslam {
@@ -232,15 +233,6 @@ const Case kCases[] = {
     {"out_optimise_is_a_file", "optimise --dataset {data} --out {file}", 1, "it is a file"},
 };
 
-// A flat random texture (FAST finds corners; no parallax, so never initialised).
-cv::Mat texture(int width, int height, unsigned seed) {
-  cv::Mat noise(height / 8, width / 8, CV_8UC3);
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
-  cv::Mat image;
-  cv::resize(noise, image, {width, height}, 0, 0, cv::INTER_CUBIC);
-  return image;
-}
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
   fs::create_directories(path.parent_path());
@@ -258,7 +250,7 @@ void write_sequence(const fs::path& folder, int frames) {
   fs::create_directories(folder / "rgb");
   std::string list = "# timestamp filename\n";
   for (int i = 0; i < frames; ++i) {
-    cv::imwrite((folder / "rgb" / frame_name(i)).string(), texture(640, 480, 7));
+    cv::imwrite((folder / "rgb" / frame_name(i)).string(), test::smooth_random_texture(640, 480, 7));
     list.append(std::to_string(i / 30.0)).append(" rgb/").append(frame_name(i)).append("\n");
   }
   write_bytes(folder / "rgb.txt", list);
@@ -274,12 +266,12 @@ class Shared {
     for (const char* name : {"zero_byte", "truncated", "mixed_size"})
       for (int i = 0; i < 3; ++i) {
         fs::create_directories(root() / name);
-        cv::imwrite((root() / name / frame_name(i)).string(), texture(640, 480, 7));
+        cv::imwrite((root() / name / frame_name(i)).string(), test::smooth_random_texture(640, 480, 7));
       }
     write_bytes(root() / "zero_byte" / frame_name(1), "");
     const std::string png = test::read_file_text(root() / "truncated" / frame_name(0));
     write_bytes(root() / "truncated" / frame_name(1), png.substr(0, png.size() / 3));
-    cv::imwrite((root() / "mixed_size" / frame_name(1)).string(), texture(320, 240, 7));
+    cv::imwrite((root() / "mixed_size" / frame_name(1)).string(), test::smooth_random_texture(320, 240, 7));
     // A sequence whose synth.json counts other frames than its rgb.txt lists.
     write_sequence(root() / "mixed_manifest", 3);
     write_bytes(root() / "mixed_manifest" / "synth.json", "{\"generator\": \"facadeslam synth\", \"frames\": 5}\n");
