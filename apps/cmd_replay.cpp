@@ -53,7 +53,7 @@ const std::vector<std::string> kReplayOutputNames = {"trajectory.txt", "trajecto
 struct ReplayOptions {
   fs::path sequence, camera, config, out, gt, gt_labels, save_map, load_map;
   bool sync = false;
-  std::size_t start = 0, stride = 1, limit = 0;
+  std::size_t start = 0, stride = 1, limit = 0, loop = 1;
   std::string on_corrupt = "skip";
   std::string semantics;  // on, off, or empty: as the semantics config says
   fs::path model, semantics_config;
@@ -134,6 +134,7 @@ int run_replay(ReplayOptions o) {
   seq.start = o.start;
   seq.stride = o.stride;
   seq.limit = o.limit;
+  seq.loops = o.loop;
   seq.on_corrupt = corrupt_policy_from_string(o.on_corrupt);
   auto source = open_sequence(o.sequence, seq);
   check_synth_manifest(o.sequence);
@@ -179,6 +180,7 @@ int run_replay(ReplayOptions o) {
     }
     const FrameReport r = system.process(std::move(*frame));
     log.add(r, system.initialised());
+    log.sample_resources(system);
     if (ar_render) ar_render->after_tracking(frame_number, r, image_to_render, system);
     progress.update(log.frames, to_string(r.status));
   }
@@ -255,6 +257,9 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--start", options->start, "Skip this many frames first")->check(CLI::Range(0.0, 1e12));
   cmd->add_option("--stride", options->stride, "Use every Nth frame")->check(CLI::Range(1.0, 1e9));
   cmd->add_option("--limit", options->limit, "Stop after this many frames (0 = all)")->check(CLI::Range(0.0, 1e12));
+  cmd->add_option("--loop", options->loop,
+                  "Play the (selected) frames this many times, for soak runs; the ground truth repeats with them")
+      ->check(CLI::Range(1.0, 1e6));
   cmd->add_option("--on-corrupt", options->on_corrupt, "Corrupt frame policy: skip or stop")
       ->check(CLI::IsMember({"skip", "stop"}));
   cmd->add_option("--semantics", options->semantics,

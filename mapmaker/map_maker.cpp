@@ -9,6 +9,7 @@
 #include "core/util/stopwatch.hpp"
 #include "mapmaker/epipolar_partner.hpp"
 #include "mapmaker/epipolar_search.hpp"
+#include "mapmaker/keyframe_culling.hpp"
 #include "mapmaker/map_ba.hpp"
 #include "mapmaker/point_geometry.hpp"
 
@@ -196,6 +197,85 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   // partner keyframe's measurements of the points it helped create.
   hand_off(kf);
   hand_off(other, &created);
+  cull_redundant_keyframes(kf->id());
+}
+
+void MapMaker::cull_redundant_keyframes(KeyFrame::Id newest) {
+  if (!options_.culling.enabled) return;
+  // Measurements and poses: the map maker, their only writer, reads them
+  // without a lock.
+  const auto keyframes = map_.keyframes();
+  if (keyframes.size() < 3) return;
+  std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>> by_id;
+  std::map<std::uint64_t, MeasuredLevels> levels;
+  for (const auto& kf : keyframes) {
+    by_id.emplace(kf->id(), kf);
+    MeasuredLevels& measured = levels[kf->id()];
+    for (const auto& [id, m] : kf->measurements()) measured.emplace(id, m.level);
+  }
+  const std::vector<std::uint64_t> culled =
+      redundant_keyframes(levels, {keyframes.front()->id(), newest}, options_.culling);
+  if (culled.empty()) return;
+
+  for (const std::uint64_t id : culled) {
+    const std::shared_ptr<KeyFrame> gone = by_id.at(id);
+    by_id.erase(id);
+    // The frames tracked against it follow the nearest keyframe left.
+    const KeyFrame* parent = nullptr;
+    for (const auto& [other_id, other] : by_id)
+      if (!parent || (other->centre_w() - gone->centre_w()).squaredNorm() <
+                         (parent->centre_w() - gone->centre_w()).squaredNorm())
+        parent = other.get();
+    // Its points' sources and views move to the keyframes still measuring
+    // them: for the source the finest level (the sharpest patch), then the
+    // newest; for the view the newest, as MapPoint::view() is defined.
+    struct Handover {
+      std::shared_ptr<MapPoint> point;
+      KeyFrame* source = nullptr;
+      KeyFrame* view = nullptr;
+    };
+    std::vector<Handover> handovers;
+    for (const auto& [point_id, m] : gone->measurements()) {
+      auto p = map_.point(point_id);
+      if (!p) continue;
+      const bool source_here = p->source().keyframe_id == id, view_here = p->view().keyframe_id == id;
+      if (!source_here && !view_here) continue;
+      Handover h{p, nullptr, nullptr};
+      for (const auto& [other_id, other] : by_id) {
+        const auto it = other->measurements().find(point_id);
+        if (it == other->measurements().end()) continue;
+        if (!h.source || it->second.level <= h.source->measurements().at(point_id).level) h.source = other.get();
+        h.view = other.get();  // by_id is in id order: the last is the newest
+      }
+      handovers.push_back(std::move(h));
+    }
+    map_.update([&](MapEditor& edit) {
+      for (const Handover& h : handovers) {
+        if (!h.source) {
+          edit.mark_bad(*h.point);  // measured nowhere else
+          continue;
+        }
+        if (h.point->source().keyframe_id == id) {
+          const Measurement& m = h.source->measurements().at(h.point->id());
+          const PatchSource source{h.source->id(), h.source->pyramid(), m.level, m.pixel};
+          edit.set_source(*h.point, *h.source, source,
+                          source_geometry(camera_, h.source->T_c_w(), source, h.point->position()));
+        }
+        if (h.point->view().keyframe_id == id) {
+          const Measurement& m = h.view->measurements().at(h.point->id());
+          const PatchSource view{h.view->id(), h.view->pyramid(), m.level, m.pixel};
+          edit.set_view(*h.point, view, source_geometry(camera_, h.view->T_c_w(), view, h.point->position()));
+        }
+      }
+      edit.cull_keyframe(id, {parent->id(), gone->T_c_w() * parent->T_c_w().inverse()});
+    });
+    spdlog::debug("keyframe {} (frame {}) culled as redundant: {} points handed on, frames follow keyframe {}", id,
+                  gone->frame_index(), handovers.size(), parent->id());
+  }
+  const auto removed = map_.remove_bad_points();
+  std::lock_guard lock(stats_mutex_);
+  stats_.keyframes_culled += culled.size();
+  stats_.points_removed += removed.size();
 }
 
 void MapMaker::remove_outlier_points() {

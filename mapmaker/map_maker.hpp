@@ -43,6 +43,7 @@ struct MapMakerStats {
   std::size_t keyframes_added = 0;
   std::size_t points_created = 0;
   std::size_t points_removed = 0;
+  std::size_t keyframes_culled = 0;
   std::size_t local_ba_runs = 0, global_ba_runs = 0, global_ba_aborted = 0;
   double local_ba_ms = 0, global_ba_ms = 0, keyframe_ms = 0;  // totals
 };
@@ -81,6 +82,9 @@ class MapMaker {
   void run();
   void add_keyframe(KeyFrameCandidate candidate);
   void remove_outlier_points();
+  // Culls the keyframes made redundant (keyframe_culling.hpp); never the
+  // first (the gauge of every bundle adjustment) nor `newest`.
+  void cull_redundant_keyframes(KeyFrame::Id newest);
   void update_depth_stats(KeyFrame& keyframe);
   // The keyframe `keyframe` searches for new points against (epipolar_partner.hpp).
   std::shared_ptr<KeyFrame> epipolar_partner(const KeyFrame& keyframe) const;

@@ -7,6 +7,7 @@
 #include "mapmaker/ba/bundle_adjuster.hpp"
 #include "mapmaker/depth_prior_points.hpp"
 #include "mapmaker/epipolar_partner.hpp"
+#include "mapmaker/keyframe_culling.hpp"
 
 namespace facadeslam {
 
@@ -53,6 +54,8 @@ struct MapMakerOptions {
   // this share of the time is removed (PTAM's outlier rule).
   int outlier_min_searches = 20;
   double outlier_max_found_ratio = 0.2;
+  // Redundant keyframes are culled after each new one (keyframe_culling.hpp).
+  KeyFrameCullingOptions culling;
   // Synchronous mode: a global BA after every this many keyframes (the
   // threaded map maker runs it whenever it is idle instead).
   int sync_global_ba_every = 5;

@@ -15,6 +15,9 @@ struct ReadStats {
   std::size_t frames_read = 0;             // frames delivered by next()
   std::size_t frames_skipped_corrupt = 0;  // undecodable images passed over (policy skip)
   std::vector<std::filesystem::path> corrupt_paths;
+  // The time added to each pass's timestamps when the frames are played
+  // more than once (looping_source.hpp): {0, ...}; empty for a single pass.
+  std::vector<double> pass_time_offsets_s;
 };
 
 class FrameSource {

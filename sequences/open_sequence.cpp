@@ -6,6 +6,7 @@
 
 #include "core/util/error.hpp"
 #include "sequences/image_folder_source.hpp"
+#include "sequences/looping_source.hpp"
 #include "sequences/tum_list_source.hpp"
 #include "sequences/video_source.hpp"
 
@@ -34,8 +35,9 @@ SequenceKind detect_sequence_kind(const fs::path& path) {
   return has_txt_extension(path) ? SequenceKind::tum_list : SequenceKind::video;
 }
 
-std::unique_ptr<FrameSource> open_sequence(const fs::path& path, const SequenceOptions& options) {
-  validate(options);
+namespace {
+
+std::unique_ptr<FrameSource> open_one_pass(const fs::path& path, const SequenceOptions& options) {
   const SequenceKind kind = detect_sequence_kind(path);
   if (!options.timestamps_file.empty() && kind != SequenceKind::image_folder)
     fail_file(options.timestamps_file,
@@ -50,6 +52,14 @@ std::unique_ptr<FrameSource> open_sequence(const fs::path& path, const SequenceO
     case SequenceKind::video: return std::make_unique<VideoSource>(path, options);
   }
   throw Error("open_sequence: unknown sequence kind");  // unreachable; keeps -Wreturn-type quiet
+}
+
+}  // namespace
+
+std::unique_ptr<FrameSource> open_sequence(const fs::path& path, const SequenceOptions& options) {
+  validate(options);
+  if (options.loops <= 1) return open_one_pass(path, options);
+  return std::make_unique<LoopingSource>([path, options] { return open_one_pass(path, options); }, options.loops);
 }
 
 }  // namespace facadeslam

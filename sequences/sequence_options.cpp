@@ -5,9 +5,16 @@
 #include "core/util/error.hpp"
 
 namespace facadeslam {
+namespace {
+
+constexpr std::size_t kMaxLoops = 1000000;
+
+}  // namespace
 
 void validate(const SequenceOptions& options) {
   if (options.stride == 0) throw Error("sequence options: stride must be at least 1 (got 0)");
+  if (options.loops == 0 || options.loops > kMaxLoops)
+    throw Error("sequence options: loops must be between 1 and 1000000 (got " + std::to_string(options.loops) + ")");
   if (!std::isfinite(options.fps) || options.fps <= 0.0)
     throw Error("sequence options: fps must be a positive number (got " +
                 std::to_string(options.fps) + ")");

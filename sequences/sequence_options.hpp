@@ -17,6 +17,8 @@ struct SequenceOptions {
   std::size_t start = 0;   // skip this many frames first
   std::size_t stride = 1;  // then keep every stride-th frame (>= 1)
   std::size_t limit = 0;   // at most this many frames (0 = all)
+  // Play the selected frames this many times (>= 1; looping_source.hpp).
+  std::size_t loops = 1;
   CorruptPolicy on_corrupt = CorruptPolicy::stop;
   // Frames per second for image folders without a timestamps file (and
   // videos whose container has no usable frame rate); must be > 0.
@@ -27,7 +29,7 @@ struct SequenceOptions {
   std::filesystem::path timestamps_file;
 };
 
-// Throws Error when stride is 0 or fps is not a positive finite number.
+// Throws Error when stride or loops is 0, loops is absurd (> 1e6), or fps is not a positive finite number.
 void validate(const SequenceOptions& options);
 
 // "stop" / "skip" (for command lines and configs); anything else is an Error.

@@ -9,6 +9,7 @@
 // the recomposed pose moves with the keyframe the frame was measured against.
 // The poses as tracked are kept too (trajectory_online.txt).
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -46,14 +47,17 @@ class RelativeTrajectory {
   struct Recomposed {
     Trajectory trajectory;      // camera-to-world, one pose per frame added, same order as online()
     std::size_t fallbacks = 0;  // frames whose reference keyframe was not in `keyframes`
+    std::size_t culled_references = 0;  // frames placed through culled keyframes' links
   };
   // Each frame recomposed with its reference keyframe's pose in `keyframes`
-  // (the final map's). A frame whose reference is no longer in the map keeps
-  // its online pose: keyframes are never culled one by one, a keyframe only
-  // goes with its whole map (Map::clear), so every surviving keyframe belongs
-  // to another map, with its own world frame and scale, and the "nearest" of
-  // them would place the frame in the wrong frame.
-  Recomposed recompose(const std::vector<KeyFrameSnapshot>& keyframes) const;
+  // (the final map's). A reference the map maker culled is followed through
+  // `culled` (Map::culled_keyframes) to a surviving keyframe. A frame whose
+  // reference cannot be found that way keeps its online pose: its keyframe
+  // went with its whole map (Map::clear), so every surviving keyframe
+  // belongs to another map, with its own world frame and scale, and the
+  // "nearest" of them would place the frame in the wrong frame.
+  Recomposed recompose(const std::vector<KeyFrameSnapshot>& keyframes,
+                       const std::map<KeyFrame::Id, CulledKeyFrame>& culled = {}) const;
 
  private:
   std::vector<RelativeFramePose> frames_;

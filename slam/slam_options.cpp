@@ -37,6 +37,7 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
   t.keyframe_min_overlap = c.get_double("keyframe_min_overlap", Range::closed(0, 1), t.keyframe_min_overlap);
   t.keyframe_min_frames_overlap =
       c.get_int("keyframe_min_frames_overlap", Range::closed(1, 10000), t.keyframe_min_frames_overlap);
+  t.keyframe_overlap_skips_revisits = c.get_bool("keyframe_overlap_skips_revisits", t.keyframe_overlap_skips_revisits);
   t.keyframe_min_angle_deg = c.get_double("keyframe_min_angle_deg", Range::closed(1, 180), t.keyframe_min_angle_deg);
   t.search.max_zmssd_per_pixel =
       static_cast<float>(c.get_double("max_zmssd_per_pixel", Range::positive(65025), t.search.max_zmssd_per_pixel));
@@ -67,6 +68,10 @@ void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m
                                                        m.epipolar_partner.max_axis_angle_deg);
   m.outlier_min_searches = c.get_int("outlier_min_searches", Range::closed(1, 100000), m.outlier_min_searches);
   m.outlier_max_found_ratio = c.get_double("outlier_max_found_ratio", Range::closed(0, 1), m.outlier_max_found_ratio);
+  m.culling.enabled = c.get_bool("cull_keyframes", m.culling.enabled);
+  m.culling.redundant_share = c.get_double("cull_redundant_share", Range::closed(0.5, 1), m.culling.redundant_share);
+  m.culling.min_other_keyframes =
+      c.get_int("cull_min_other_keyframes", Range::closed(1, 100), m.culling.min_other_keyframes);
   c.finish();
 }
 

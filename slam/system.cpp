@@ -194,7 +194,7 @@ void System::record_pose(const FrameReport& report) {
 }
 
 Trajectory System::final_trajectory() const {
-  const RelativeTrajectory::Recomposed final = trajectory_.recompose(map_.snapshot_keyframes());
+  const RelativeTrajectory::Recomposed final = trajectory_.recompose(map_.snapshot_keyframes(), map_.culled_keyframes());
   if (final.fallbacks)
     spdlog::warn("final trajectory: {} of {} frames kept their tracked pose (reference keyframe no longer in the map)",
                  final.fallbacks, trajectory_.size());

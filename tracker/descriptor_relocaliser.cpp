@@ -1,5 +1,7 @@
 #include "tracker/descriptor_relocaliser.hpp"
 
+#include <unordered_set>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -92,6 +94,11 @@ const DescriptorRelocaliser::KeyFrameDescriptors& DescriptorRelocaliser::descrip
 std::optional<DescriptorRelocalisation> DescriptorRelocaliser::relocalise(
     const ImagePyramid& frame, const Map& map, const std::vector<KeyFrameSnapshot>& keyframes) {
   if (!options_.enabled || keyframes.empty()) return std::nullopt;
+  // The descriptors of keyframes no longer in the map (culled) go: a long
+  // run would otherwise keep every keyframe's.
+  std::unordered_set<KeyFrame::Id> live;
+  for (const KeyFrameSnapshot& kf : keyframes) live.insert(kf.keyframe->id());
+  std::erase_if(cache_, [&](const auto& entry) { return !live.contains(entry.first); });
   std::vector<cv::KeyPoint> frame_keypoints;
   cv::Mat frame_descriptors;
   orb_->detectAndCompute(frame.level(0).image, cv::noArray(), frame_keypoints, frame_descriptors);

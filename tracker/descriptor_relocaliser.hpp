@@ -49,8 +49,9 @@ class DescriptorRelocaliser {
  public:
   DescriptorRelocaliser(Camera camera, DescriptorRelocaliserOptions options);
 
-  // `keyframes` ranked, most promising first (only the first max_keyframes
-  // are tried); the best PnP solution over them, or nothing.
+  // `keyframes`: the map's keyframes ranked, most promising first (only the
+  // first max_keyframes are tried); the best PnP solution over them, or
+  // nothing. Cached descriptors of keyframes not among them are dropped.
   std::optional<DescriptorRelocalisation> relocalise(const ImagePyramid& frame, const Map& map,
                                                      const std::vector<KeyFrameSnapshot>& keyframes);
   // Forgets the cached keyframe descriptors (a map reset).

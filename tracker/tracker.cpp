@@ -343,28 +343,40 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
   // as soon as the points found fall below a share of those found when the
   // last keyframe was made, even on dodgy tracking, which is what comes
   // next otherwise.
-  if (result.quality != TrackingQuality::bad && frames >= static_cast<std::size_t>(options_.keyframe_min_frames_overlap) &&
-      result.fine_found < options_.keyframe_min_overlap * found_at_keyframe_)
-    return KeyFrameReason::moved;
-  if (result.quality != TrackingQuality::good) return KeyFrameReason::none;
-  if (frames < static_cast<std::size_t>(std::min(options_.keyframe_min_frames, options_.keyframe_min_frames_turning)))
-    return KeyFrameReason::none;
   // A keyframe near the camera (in units of its scene depth) that looks the
   // same way already covers this view. Near keyframes that all look
   // elsewhere: the camera has turned.
   const Eigen::Vector3d centre = result.T_c_w.inverse().translation();
   const Eigen::Vector3d axis = optical_axis_w(result.T_c_w);
   const double min_cos = std::cos(deg_to_rad(options_.keyframe_min_angle_deg));
+  const auto near_by = [&](const KeyFrameSnapshot& kf, double min_distance) {
+    return (kf.centre_w() - centre).norm() / std::max(kf.mean_depth, 1e-9) <= min_distance;
+  };
+  const auto looks_the_same_way = [&](const KeyFrameSnapshot& kf) { return kf.optical_axis_w().dot(axis) >= min_cos; };
+  const bool dodgy_or_good = result.quality != TrackingQuality::bad;
+  if (dodgy_or_good && frames >= static_cast<std::size_t>(options_.keyframe_min_frames_overlap) &&
+      result.fine_found < options_.keyframe_min_overlap * found_at_keyframe_) {
+    const auto keyframes = map_.snapshot_keyframes();  // ordered by id: the newest last
+    const auto covers = [&](const KeyFrameSnapshot& kf) {
+      return near_by(kf, options_.keyframe_min_distance) && looks_the_same_way(kf);
+    };
+    const bool revisit = options_.keyframe_overlap_skips_revisits && !keyframes.empty() &&
+                         !near_by(keyframes.back(), options_.keyframe_min_distance) &&
+                         std::any_of(keyframes.begin(), keyframes.end() - 1, covers);
+    if (!revisit) return KeyFrameReason::moved;
+  }
+  if (result.quality != TrackingQuality::good) return KeyFrameReason::none;
+  if (frames < static_cast<std::size_t>(std::min(options_.keyframe_min_frames, options_.keyframe_min_frames_turning)))
+    return KeyFrameReason::none;
   // After a turn the newest keyframes hold depth-prior points: the first
   // small step away gives them a baseline, so it makes a keyframe sooner.
   const double min_distance =
       options_.keyframe_min_distance * (last_keyframe_turned_ ? options_.keyframe_distance_after_turn : 1.0);
   bool near = false;
   for (const KeyFrameSnapshot& kf : map_.snapshot_keyframes()) {
-    const double distance = (kf.centre_w() - centre).norm() / std::max(kf.mean_depth, 1e-9);
-    if (distance > min_distance) continue;
+    if (!near_by(kf, min_distance)) continue;
     near = true;
-    if (kf.optical_axis_w().dot(axis) >= min_cos) return KeyFrameReason::none;
+    if (looks_the_same_way(kf)) return KeyFrameReason::none;
   }
   if (near) return frames >= static_cast<std::size_t>(options_.keyframe_min_frames_turning) ? KeyFrameReason::turned
                                                                                             : KeyFrameReason::none;

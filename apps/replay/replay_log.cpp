@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/util/resident_memory.hpp"
+
 namespace facadeslam::apps {
 
 Json timing_summary(std::vector<double> ms) {
@@ -36,6 +38,57 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
     const StageTimings& t = r.tracking.timings;
     tracker_ms.push_back(r.pyramid_ms + t.snapshot_ms + t.coarse_ms + t.fine_ms + t.pose_ms + t.relocalise_ms);
   }
+}
+
+namespace {
+
+double median_of(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// The entries of `all` after the first `from`.
+std::vector<double> tail(const std::vector<double>& all, std::size_t from) {
+  return {all.begin() + static_cast<std::ptrdiff_t>(std::min(from, all.size())), all.end()};
+}
+
+}  // namespace
+
+void ReplayLog::sample_resources(const System& system) {
+  if (frames == 0 || frames % kSampleEvery != 0) return;
+  ResourceSample s;
+  s.frames = frames;
+  s.resident_mib = static_cast<double>(resident_memory_bytes().value_or(0)) / (1024.0 * 1024.0);
+  s.keyframes = system.map().keyframe_count();
+  s.points = system.map().point_count();
+  s.frame_ms_median = median_of(tail(total_ms, frames - kSampleEvery));
+  s.tracker_ms_median = median_of(tail(tracker_ms, tracker_ms_at_last_sample_));
+  tracker_ms_at_last_sample_ = tracker_ms.size();
+  resources.push_back(s);
+}
+
+Json ReplayLog::resources_json() const {
+  Json frames_column = Json::array(), resident = Json::array(), keyframes = Json::array(), points = Json::array(),
+       frame_ms = Json::array(), tracker = Json::array();
+  for (const ResourceSample& s : resources) {
+    frames_column.push_back(s.frames);
+    resident.push_back(s.resident_mib);
+    keyframes.push_back(s.keyframes);
+    points.push_back(s.points);
+    frame_ms.push_back(s.frame_ms_median);
+    tracker.push_back(s.tracker_ms_median);
+  }
+  Json j = Json::object();
+  j["every_frames"] = kSampleEvery;
+  j["frames"] = frames_column;
+  j["resident_mib"] = resident;
+  j["keyframes"] = keyframes;
+  j["points"] = points;
+  j["frame_ms_median"] = frame_ms;
+  j["tracker_ms_median"] = tracker;
+  return j;
 }
 
 Json ReplayLog::timings() const {

@@ -97,6 +97,8 @@ Json mapping_summary(const MapMakerStats& stats) {
   Json mapping = Json::object();
   mapping["points_created"] = stats.points_created;
   mapping["points_removed"] = stats.points_removed;
+  mapping["keyframes_added"] = stats.keyframes_added;
+  mapping["keyframes_culled"] = stats.keyframes_culled;
   mapping["local_ba_runs"] = stats.local_ba_runs;
   mapping["global_ba_runs"] = stats.global_ba_runs;
   mapping["global_ba_aborted"] = stats.global_ba_aborted;
@@ -141,13 +143,15 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   timings["local_ba_total_ms"] = stats.local_ba_ms;
   timings["global_ba_total_ms"] = stats.global_ba_ms;
   report["timings"] = timings;
+  report["resources"] = log.resources_json();
   report["mapping"] = mapping_summary(stats);
   report["semantics"] = semantics_summary(info, log, system);
   if (info.render) report["render"] = *info.render;
   if (!paths.gt.empty() && trajectory.size() >= 3) {
     // trajectory.txt's figures at the top level (the names report.json has
     // always had), the online trajectory's under the same names in ate_online.
-    const Trajectory gt = read_trajectory(paths.gt);
+    // A looped replay's ground truth repeats with the frames (looping_source.hpp).
+    const Trajectory gt = repeat_trajectory(read_trajectory(paths.gt), read_stats.pass_time_offsets_s);
     add_ate_figures(report, gt, trajectory, "trajectory.txt", paths.out / "trajectory.png");
     Json ate_online = Json::object();
     add_ate_figures(ate_online, gt, online, "trajectory_online.txt", {});

@@ -48,13 +48,13 @@ struct PointColour {
   std::string legend;
 };
 
-PointColour point_colour(const MapPoint& point) {
-  const SemanticLabel label = point.label();
+PointColour point_colour(const PointSnapshot& point) {
+  const SemanticLabel label = point.point->label();
   if (label.label != kUnlabelled) {
     const SemanticClass& c = semantic_class(label.label);
     return {class_bgr(c), std::string(c.name)};
   }
-  const int level = std::clamp(point.source().level, 0, static_cast<int>(kLevelBgr.size()) - 1);
+  const int level = std::clamp(point.source.level, 0, static_cast<int>(kLevelBgr.size()) - 1);
   return {kLevelBgr[static_cast<std::size_t>(level)], "level " + std::to_string(level)};
 }
 
@@ -229,7 +229,7 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
     for (const PointSnapshot& p : points) {
       const auto before = m.found_before.find(p.point->id());
       if (before == m.found_before.end() || p.point->times_found() <= before->second) continue;
-      const replay_render_detail::PointColour colour = replay_render_detail::point_colour(*p.point);
+      const replay_render_detail::PointColour colour = replay_render_detail::point_colour(p);
       content.points.push_back({p.geometry.p_w, colour.bgr});
       legend.emplace(colour.legend, colour.bgr);
     }

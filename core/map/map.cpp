@@ -36,6 +36,18 @@ void MapEditor::set_view(MapPoint& point, const PatchSource& view, const PointGe
   point.view_geometry_ = geometry;
 }
 
+void MapEditor::set_source(MapPoint& point, KeyFrame& keyframe, const PatchSource& source, const PointGeometry& geometry) {
+  point.source_ = source;
+  point.geometry_ = geometry;
+  if (const auto it = keyframe.measurements_.find(point.id()); it != keyframe.measurements_.end())
+    it->second.from_source = true;
+}
+
+void MapEditor::cull_keyframe(KeyFrame::Id id, const CulledKeyFrame& link) {
+  editable_.keyframes_.erase(id);
+  editable_.culled_[id] = link;
+}
+
 bool MapEditor::erase_measurement(KeyFrame& keyframe, MapPoint::Id point) {
   return keyframe.measurements_.erase(point) > 0;
 }
@@ -85,7 +97,7 @@ std::vector<PointSnapshot> Map::snapshot_points() const {
   std::vector<PointSnapshot> out;
   out.reserve(points_.size());
   for (const auto& [id, p] : points_)
-    if (!p->is_bad()) out.push_back({p, p->geometry(), p->view(), p->view_geometry()});
+    if (!p->is_bad()) out.push_back({p, p->source(), p->geometry(), p->view(), p->view_geometry()});
   return out;
 }
 
@@ -124,10 +136,16 @@ std::vector<MapPoint::Id> Map::remove_bad_points() {
   return removed;
 }
 
+std::map<KeyFrame::Id, CulledKeyFrame> Map::culled_keyframes() const {
+  std::shared_lock lock(mutex_);
+  return culled_;
+}
+
 void Map::clear() {
   std::unique_lock lock(mutex_);
   keyframes_.clear();
   points_.clear();
+  culled_.clear();
 }
 
 }  // namespace facadeslam

@@ -32,6 +32,7 @@ namespace facadeslam {
 // A point with a copy of its geometry, taken under the map's lock.
 struct PointSnapshot {
   std::shared_ptr<MapPoint> point;
+  PatchSource source;            // MapPoint::source()
   PointGeometry geometry;
   PatchSource view;              // MapPoint::view()
   PointGeometry view_geometry;
@@ -46,6 +47,16 @@ struct KeyFrameSnapshot {
   double depth_sigma = 0.0;
   Eigen::Vector3d centre_w() const { return T_c_w.inverse().translation(); }
   Eigen::Vector3d optical_axis_w() const { return facadeslam::optical_axis_w(T_c_w); }
+};
+
+// A keyframe the map maker culled as redundant, and where the frames that
+// were tracked against it find their pose from then on: the surviving
+// keyframe `parent` and the culled keyframe's pose relative to it when it
+// went (RelativeTrajectory follows these links, as ORB-SLAM keeps a culled
+// keyframe's parent and relative pose for its trajectory).
+struct CulledKeyFrame {
+  KeyFrame::Id parent = 0;
+  SE3d T_culled_parent;
 };
 
 // A measurement to record in a keyframe that may already be in the map.
@@ -90,10 +101,18 @@ class MapEditor : public MapView {
   void set_geometry(MapPoint& point, const PointGeometry& geometry);
   void set_view(MapPoint& point, const PatchSource& view, const PointGeometry& geometry);
   void mark_bad(MapPoint& point) { point.bad_.store(true, std::memory_order_release); }
+  // Hands the point to another keyframe that measures it (its source
+  // keyframe is being culled); that measurement becomes its source one.
+  void set_source(MapPoint& point, KeyFrame& keyframe, const PatchSource& source, const PointGeometry& geometry);
+  // Takes a keyframe out of the map (its measurements go with it) and
+  // records where its frames find their pose. The points it was the source
+  // or the view of must have been handed on first (set_source, set_view).
+  void cull_keyframe(KeyFrame::Id id, const CulledKeyFrame& link);
 
  private:
   friend class Map;
-  explicit MapEditor(Map& map) : MapView(map) {}
+  explicit MapEditor(Map& map) : MapView(map), editable_(map) {}
+  Map& editable_;
 };
 
 class Map {
@@ -139,6 +158,9 @@ class Map {
   std::size_t keyframe_count() const;
   std::size_t point_count() const;
 
+  // The keyframes culled so far (Map::clear forgets them), by id.
+  std::map<KeyFrame::Id, CulledKeyFrame> culled_keyframes() const;
+
   // Removes the points marked bad and their measurements in every keyframe,
   // in one exclusive section; returns their ids.
   std::vector<MapPoint::Id> remove_bad_points();
@@ -153,10 +175,12 @@ class Map {
 
  private:
   friend class MapView;
+  friend class MapEditor;
 
   mutable std::shared_mutex mutex_;
   std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>> keyframes_;
   std::map<MapPoint::Id, std::shared_ptr<MapPoint>> points_;
+  std::map<KeyFrame::Id, CulledKeyFrame> culled_;
   std::atomic<std::uint64_t> next_keyframe_id_{0};
   std::atomic<std::uint64_t> next_point_id_{0};
 };

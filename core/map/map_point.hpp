@@ -44,7 +44,9 @@ using ClassVotes = std::array<float, kSemanticClasses.size()>;
 // kUnlabelled when there are no votes.
 SemanticLabel label_from_votes(const ClassVotes& votes);
 
-// Where a point's patch comes from; immutable once the point exists.
+// Where a point's patch comes from: the keyframe that made it, until the
+// map maker culls that keyframe and hands the point to another one that
+// measures it (MapEditor::set_source).
 struct PatchSource {
   std::uint64_t keyframe_id = 0;
   std::shared_ptr<const ImagePyramid> pyramid;  // the source keyframe's images
@@ -66,9 +68,11 @@ class MapPoint {
   MapPoint(Id id, PatchSource source, const PointGeometry& geometry);
 
   Id id() const { return id_; }
-  const PatchSource& source() const { return source_; }
 
-  // Owned by the Map (see above).
+  // Owned by the Map (see above). The source changes only when its keyframe
+  // is culled; threads other than the map maker read it from
+  // Map::snapshot_points or under Map::read.
+  const PatchSource& source() const { return source_; }
   const PointGeometry& geometry() const { return geometry_; }
   const Eigen::Vector3d& position() const { return geometry_.p_w; }
   // The patch the tracker searches for and its geometry: the point as the
@@ -106,7 +110,7 @@ class MapPoint {
   friend class MapEditor;
 
   const Id id_;
-  const PatchSource source_;
+  PatchSource source_;
   PointGeometry geometry_;
   PatchSource view_;
   PointGeometry view_geometry_;

@@ -14,4 +14,21 @@ struct StampedPose {
 
 using Trajectory = std::vector<StampedPose>;
 
+// The trajectory once per offset, each copy shifted by its offset in time
+// (the ground truth of a looped replay: ReadStats::pass_time_offsets_s).
+// Where a copy would reach back into the time the previous one covers (a
+// ground truth longer than the frames), its overlapping poses are dropped,
+// so the result stays in time order. No offsets: the trajectory as it is.
+inline Trajectory repeat_trajectory(const Trajectory& trajectory, const std::vector<double>& offsets) {
+  if (offsets.empty()) return trajectory;
+  Trajectory out;
+  out.reserve(trajectory.size() * offsets.size());
+  for (const double offset : offsets)
+    for (StampedPose pose : trajectory) {
+      pose.timestamp += offset;
+      if (out.empty() || pose.timestamp > out.back().timestamp || offset == offsets.front()) out.push_back(pose);
+    }
+  return out;
+}
+
 }  // namespace facadeslam

@@ -36,8 +36,8 @@ MapLabelAccuracy map_label_accuracy(const Map& map, const GroundTruthLabels& tru
       ++out.unlabelled;
       continue;
     }
-    const auto it = truth_of_keyframe.find(p.point->source().keyframe_id);
-    const Eigen::Vector2d& px = p.point->source().pixel_level0;
+    const auto it = truth_of_keyframe.find(p.source.keyframe_id);
+    const Eigen::Vector2d& px = p.source.pixel_level0;
     const int x = static_cast<int>(std::lround(px.x())), y = static_cast<int>(std::lround(px.y()));
     if (it == truth_of_keyframe.end() || it->second.empty() || x < 0 || y < 0 || x >= it->second.cols ||
         y >= it->second.rows) {

@@ -205,6 +205,7 @@ const Case kCases[] = {
     {"cli_stride_zero", "replay {seq} --stride 0 --out {out}", 2, "--stride"},
     {"cli_start_negative", "replay {seq} --start -5 --out {out}", 2, "--start"},
     {"cli_limit_negative", "replay {seq} --limit=-1 --out {out}", 2, "--limit"},
+    {"cli_loop_zero", "replay {seq} --loop 0 --out {out}", 2, "--loop"},
     {"cli_resolution_small", "synth --scene {root}/configs/scenes/demo.yaml --resolution 12x12 --out {out}", 2,
      "--resolution"},
     {"cli_resolution_text", "synth --scene {root}/configs/scenes/demo.yaml --resolution big --out {out}", 2,

@@ -105,5 +105,35 @@ TEST(RelativeTrajectory, AFrameWhoseReferenceLeftTheMapKeepsItsOnlinePose) {
   expect_same_pose(recomposed.trajectory[2].T_w_c, online[2].T_w_c, 13);
 }
 
+TEST(RelativeTrajectory, AFrameOfACulledKeyframeFollowsTheChainOfParentsToTheMap) {
+  Map map;
+  const auto kf_a = make_keyframe(map, 0, pose(0, 0, 0, 0, 0, 0));
+  const auto kf_b = make_keyframe(map, 10, pose(-0.5, 0.02, 0.1, 0.01, -0.2, 0.03));
+  const auto kf_c = make_keyframe(map, 20, pose(-0.9, 0.05, 0.1, 0.02, -0.3, 0.03));
+  RelativeTrajectory trajectory;
+  trajectory.add(21, 21.0, pose(-0.95, 0.05, 0.1, 0.02, -0.31, 0.03), kf_c->id(), kf_c->T_c_w());
+  const Trajectory online = trajectory.online();
+
+  // c is culled with parent b, then b with parent a; then the map moves a
+  // by M. The frame was rigidly tied to c, c to b and b to a when each went,
+  // so it moves by M too.
+  map.update([&](MapEditor& edit) {
+    edit.cull_keyframe(kf_c->id(), {kf_b->id(), kf_c->T_c_w() * kf_b->T_c_w().inverse()});
+    edit.cull_keyframe(kf_b->id(), {kf_a->id(), kf_b->T_c_w() * kf_a->T_c_w().inverse()});
+  });
+  const SE3d M = pose(0.1, 0.2, -0.3, 0.0, 0.05, 0.0);
+  map.update([&](MapEditor& edit) { edit.set_pose(*kf_a, kf_a->T_c_w() * M.inverse()); });
+  const auto recomposed = trajectory.recompose(map.snapshot_keyframes(), map.culled_keyframes());
+  EXPECT_EQ(recomposed.fallbacks, 0u);
+  EXPECT_EQ(recomposed.culled_references, 1u);
+  ASSERT_EQ(recomposed.trajectory.size(), 1u);
+  expect_same_pose(recomposed.trajectory[0].T_w_c, M.isometry() * online[0].T_w_c, 21);
+
+  // Without the links the frame could only keep its online pose.
+  const auto without_links = trajectory.recompose(map.snapshot_keyframes());
+  EXPECT_EQ(without_links.fallbacks, 1u);
+  expect_same_pose(without_links.trajectory[0].T_w_c, online[0].T_w_c, 21);
+}
+
 }  // namespace
 }  // namespace facadeslam

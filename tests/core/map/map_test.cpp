@@ -193,6 +193,37 @@ TEST(Map, ConcurrentReadersAndWriterSeeWholeObjects) {
   EXPECT_EQ(map.point_count(), 210u);
 }
 
+TEST(Map, ACulledKeyframeHandsItsPointsOnAndLeavesALinkForItsFrames) {
+  Map map;
+  test::build_test_map(map, 3);
+  const auto keyframes = map.keyframes();
+  const auto gone = keyframes.front(), stays = keyframes.back();
+  const auto p = map.points().front();
+  ASSERT_EQ(p->source().keyframe_id, gone->id());
+  ASSERT_FALSE(stays->measurements().at(p->id()).from_source);
+
+  const Measurement& m = stays->measurements().at(p->id());
+  const PatchSource source{stays->id(), stays->pyramid(), m.level, m.pixel};
+  PointGeometry geometry = p->geometry();
+  geometry.right_w = Eigen::Vector3d(0.03, 0, 0);
+  const CulledKeyFrame link{stays->id(), gone->T_c_w() * stays->T_c_w().inverse()};
+  map.update([&](MapEditor& edit) {
+    edit.set_source(*p, *stays, source, geometry);
+    edit.cull_keyframe(gone->id(), link);
+  });
+  EXPECT_EQ(p->source().keyframe_id, stays->id());
+  EXPECT_EQ(p->geometry().right_w, geometry.right_w);
+  EXPECT_TRUE(stays->measurements().at(p->id()).from_source) << "bundle adjustment never drops a source measurement";
+  EXPECT_EQ(map.keyframe_count(), 1u);
+  EXPECT_EQ(map.keyframe(gone->id()), nullptr);
+  const auto culled = map.culled_keyframes();
+  ASSERT_EQ(culled.size(), 1u);
+  EXPECT_EQ(culled.at(gone->id()).parent, stays->id());
+  EXPECT_EQ(map.snapshot_points().front().source.keyframe_id, stays->id()) << "snapshots carry the source";
+  map.clear();
+  EXPECT_TRUE(map.culled_keyframes().empty()) << "a cleared map forgets its culled keyframes";
+}
+
 TEST(Map, ClearEmptiesEverything) {
   Map map;
   test::build_test_map(map, 4);
