@@ -2,15 +2,18 @@
 // 211-bit genome (thesis III.8, IV.4) on a LabelMeFacade-layout dataset's
 // train.txt, with a validation split carved from it; results, checkpoints
 // and the winner's model in the run folder (semantics/optimiser).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
+#include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
 #include "core/util/interrupt.hpp"
 #include "semantics/optimiser/ga_options.hpp"
@@ -28,6 +31,7 @@ struct Options {
   std::filesystem::path config = "configs/optimise.yaml";
   bool config_given = false;
   std::optional<int> population, generations;
+  std::vector<std::string> seed_genomes;  // --seed-genome, resolved in run()
   bool no_model = false;
 };
 
@@ -87,6 +91,16 @@ void run(Options& o) {
                 std::to_string(o.run.ga.elites) + " elites (" + o.config.string() + ")");
   o.run.ga.tournament_size = std::min(o.run.ga.tournament_size, o.run.ga.population);
   o.run.train_best_model = !o.no_model;
+  // Given genomes join the thesis genome in the first generation (a run
+  // continued from an earlier run's winner, EDD-like genomes).
+  for (const std::string& g : o.seed_genomes) {
+    semantics::Genome genome = resolve_genome(g, "--seed-genome");
+    if (std::find(o.run.seeds.begin(), o.run.seeds.end(), genome) == o.run.seeds.end())
+      o.run.seeds.push_back(std::move(genome));
+  }
+  if (o.run.seeds.size() > static_cast<std::size_t>(o.run.ga.population))
+    throw CLI::ValidationError("--seed-genome", std::to_string(o.run.seeds.size()) + " seed genomes (with the thesis "
+                               "genome) do not fit a population of " + std::to_string(o.run.ga.population));
 #ifdef FACADESLAM_HAVE_MPI
   if (semantics::launched_by_mpi()) {
     if (const auto r = run_under_mpi(o)) report(o, *r);
@@ -121,6 +135,8 @@ void add_optimise_command(CLI::App& app) {
   cmd->add_flag("--resume", r.resume, "Continue the run in --out from its newest generation-NNN.json");
   cmd->add_option("--config", options->config, "GA settings YAML (default: configs/optimise.yaml when present)")
       ->each([options](const std::string&) { options->config_given = true; });
+  cmd->add_option("--seed-genome", options->seed_genomes,
+                  "A genome (file or 0/1 string) for the first generation beside the thesis genome; repeatable");
   cmd->add_flag("--no-model", options->no_model, "Do not train best.fsmodel at the end");
   cmd->callback([options] { run(*options); });
 }

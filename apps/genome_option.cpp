@@ -10,7 +10,7 @@
 
 namespace facadeslam::apps {
 
-semantics::Genome resolve_genome(const std::string& value) {
+semantics::Genome resolve_genome(const std::string& value, const std::string& option) {
   using semantics::Genome;
   if (value.empty()) return Genome::thesis_best();
   std::error_code ec;
@@ -22,14 +22,14 @@ semantics::Genome resolve_genome(const std::string& value) {
   // file, bad input (exit code 1).
   if (bits_only || value.size() == static_cast<std::size_t>(Genome::kBits)) {
     try {
-      return Genome::parse(value, "--genome");
+      return Genome::parse(value, option);
     } catch (const Error& e) {
       throw CLI::ValidationError(e.what());
     }
   }
   std::string shown = value.substr(0, 40);
   if (value.size() > 40) shown.append("...");
-  std::string message = "--genome: ";
+  std::string message = option + ": ";
   message.append(quoted_for_message(shown)).append(" is neither a genome file nor a 211-character 0/1 string");
   throw CLI::ValidationError(message);
 }

@@ -9,8 +9,8 @@
 namespace facadeslam::apps {
 
 // Throws CLI::ValidationError (a bad command line, exit code 2) naming
-// --genome when the value is neither a file nor a valid genome string, and
+// `option` when the value is neither a file nor a valid genome string, and
 // Error (exit code 1) for a genome file that does not parse.
-semantics::Genome resolve_genome(const std::string& value);
+semantics::Genome resolve_genome(const std::string& value, const std::string& option = "--genome");
 
 }  // namespace facadeslam::apps

@@ -38,6 +38,8 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
   t.keyframe_min_frames_overlap =
       c.get_int("keyframe_min_frames_overlap", Range::closed(1, 10000), t.keyframe_min_frames_overlap);
   t.keyframe_overlap_skips_revisits = c.get_bool("keyframe_overlap_skips_revisits", t.keyframe_overlap_skips_revisits);
+  t.keyframe_revisit_age_frames =
+      c.get_int("keyframe_revisit_age_frames", Range::closed(1, 1000000), t.keyframe_revisit_age_frames);
   t.keyframe_min_angle_deg = c.get_double("keyframe_min_angle_deg", Range::closed(1, 180), t.keyframe_min_angle_deg);
   t.search.max_zmssd_per_pixel =
       static_cast<float>(c.get_double("max_zmssd_per_pixel", Range::positive(65025), t.search.max_zmssd_per_pixel));

@@ -360,9 +360,13 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
     const auto covers = [&](const KeyFrameSnapshot& kf) {
       return near_by(kf, options_.keyframe_min_distance) && looks_the_same_way(kf);
     };
-    const bool revisit = options_.keyframe_overlap_skips_revisits && !keyframes.empty() &&
-                         !near_by(keyframes.back(), options_.keyframe_min_distance) &&
-                         std::any_of(keyframes.begin(), keyframes.end() - 1, covers);
+    const auto settled = [&](const KeyFrameSnapshot& newest) {
+      return !near_by(newest, options_.keyframe_min_distance) ||
+             newest.keyframe->frame_index() + static_cast<std::size_t>(options_.keyframe_revisit_age_frames) <=
+                 frame_index;
+    };
+    const bool revisit = options_.keyframe_overlap_skips_revisits && !keyframes.empty() && settled(keyframes.back()) &&
+                         std::any_of(keyframes.begin(), keyframes.end(), covers);
     if (!revisit) return KeyFrameReason::moved;
   }
   if (result.quality != TrackingQuality::good) return KeyFrameReason::none;

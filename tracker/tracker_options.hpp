@@ -86,14 +86,15 @@ struct TrackerOptions {
   // leaves the map: forward motion at 10 Hz), at most every this many frames.
   double keyframe_min_overlap = 0.9;
   int keyframe_min_frames_overlap = 2;
-  // ... except on a revisit: when the newest keyframe is far from the
-  // camera but an older one covers the view (near, looking the same way),
-  // the camera has come back to mapped ground; the found count falling is
-  // then not the view leaving the map (a dense map's points are searched up
-  // to a cap, and which are found varies), and a keyframe there would only
-  // duplicate the old one: a looped replay grew by 1.4 keyframes and 280
-  // points per pass without this.
+  // ... except on a revisit: when a keyframe covers the view (near, looking
+  // the same way) and the newest keyframe is far from the camera or was
+  // made this many frames ago or more, the camera is on mapped ground; the
+  // found count falling is then not the view leaving the map (a dense map's
+  // points are searched up to a cap, and which are found varies), and a
+  // keyframe there would only duplicate the old one: a looped replay grew
+  // by 1.4 keyframes and 280 points per pass without this.
   bool keyframe_overlap_skips_revisits = true;
+  int keyframe_revisit_age_frames = 60;
 
   // Label-aware tracking (set from configs/semantics.yaml when semantics are
   // on): a point labelled with one of these classes at this confidence or

@@ -22,8 +22,12 @@ GroundTruthLabelFiles::GroundTruthLabelFiles(fs::path folder) : folder_(std::mov
 
 void GroundTruthLabelFiles::add(const Frame& frame) {
   if (frame.source.empty()) throw Error("ground-truth labels need frames read from image files");
-  const bool first = files_.empty();
-  files_[frame.index] = folder_ / frame.source.filename();
+  const bool first = names_.empty();
+  const std::string name = frame.source.filename().string();
+  const auto [it, added] = name_ids_.emplace(name, static_cast<std::uint32_t>(names_.size()));
+  if (added) names_.push_back(name);
+  if (name_of_frame_.size() <= frame.index) name_of_frame_.resize(frame.index + 1, 0);
+  name_of_frame_[frame.index] = it->second + 1;
   if (first) {
     frame_size_ = frame.colour.size();
     class_ids(frame.index);
@@ -31,9 +35,9 @@ void GroundTruthLabelFiles::add(const Frame& frame) {
 }
 
 cv::Mat GroundTruthLabelFiles::class_ids(std::size_t frame_index) const {
-  const auto it = files_.find(frame_index);
-  if (it == files_.end()) throw Error("ground-truth labels: frame " + std::to_string(frame_index) + " was not read");
-  const fs::path& path = it->second;
+  if (frame_index >= name_of_frame_.size() || name_of_frame_[frame_index] == 0)
+    throw Error("ground-truth labels: frame " + std::to_string(frame_index) + " was not read");
+  const fs::path path = folder_ / names_[name_of_frame_[frame_index] - 1];
   const cv::Mat colours = semantics::read_label_image(path);
   if (colours.size() != frame_size_)
     fail_file(path, "label image is " + std::to_string(colours.cols) + "x" + std::to_string(colours.rows) +

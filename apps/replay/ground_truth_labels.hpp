@@ -5,7 +5,10 @@
 // report.json its label accuracy (semantics/evaluation/map_label_accuracy.hpp).
 #include <cstddef>
 #include <filesystem>
-#include <map>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -33,7 +36,12 @@ class GroundTruthLabelFiles {
 
  private:
   std::filesystem::path folder_;
-  std::map<std::size_t, std::filesystem::path> files_;
+  // Frame index -> 1 + the index of its file name in names_ (0: not read).
+  // Four bytes a frame, and each name once: a looped soak replay plays the
+  // same files thousands of times.
+  std::vector<std::uint32_t> name_of_frame_;
+  std::vector<std::string> names_;
+  std::unordered_map<std::string, std::uint32_t> name_ids_;
   cv::Size frame_size_;
 };
 

@@ -1,5 +1,6 @@
 #include "apps/replay/replay_outputs.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include <spdlog/spdlog.h>
@@ -129,6 +130,8 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["initialised"] = system.initialised();
   report["interrupted"] = info.interrupted;
   report["frames"] = log.frames;
+  // replay --loop: how many times the frames were played (1 without).
+  report["passes"] = std::max<std::size_t>(1, read_stats.pass_time_offsets_s.size());
   report["frames_tracked"] = log.tracked;
   report["frames_lost"] = log.lost;
   report["frames_corrupt_skipped"] = read_stats.frames_skipped_corrupt;

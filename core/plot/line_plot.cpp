@@ -128,14 +128,22 @@ LinePlot::LinePlot(int width, int height) : width_(width), height_(height) {
                 std::to_string(height));
 }
 
-void LinePlot::set_y_range(double lo, double hi) {
+namespace {
+
+std::pair<double, double> checked_range(const char* axis, double lo, double hi) {
   if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) {
-    std::string message = "plot y range: expected finite lo < hi, got ";
+    std::string message = "plot ";
+    message.append(axis).append(" range: expected finite lo < hi, got ");
     message.append(std::to_string(lo)).append(" and ").append(std::to_string(hi));
     throw Error(message);
   }
-  y_range_ = std::make_pair(lo, hi);
+  return {lo, hi};
 }
+
+}  // namespace
+
+void LinePlot::set_y_range(double lo, double hi) { y_range_ = checked_range("y", lo, hi); }
+void LinePlot::set_x_range(double lo, double hi) { x_range_ = checked_range("x", lo, hi); }
 
 void LinePlot::add_series(std::string name, std::vector<double> x, std::vector<double> y, SeriesStyle style) {
   if (x.size() != y.size())
@@ -162,6 +170,7 @@ LinePlot::Arrangement LinePlot::arrange() const {
   if (data_x.empty()) data_x = {0.0, 1.0};
   if (data_y.empty()) data_y = {0.0, 1.0};
   if (y_range_) data_y = {y_range_->first, y_range_->second};
+  if (x_range_) data_x = {x_range_->first, x_range_->second};
   // A little air so that no line runs along the axes box.
   const auto padded = [](Range r) {
     const double pad = 0.03 * r.span();
@@ -212,10 +221,14 @@ LinePlot::Arrangement LinePlot::arrange() const {
       a.y = {ty.lo, ty.hi};
       a.x_ticks = tx.values;
       a.y_ticks = ty.values;
+      // A given range is kept, not widened to the outer ticks.
       if (y_range_) {
-        // The given range, not widened to the outer ticks.
         a.y = data_y;
         a.y_ticks = multiples_inside(ty.step, data_y);
+      }
+      if (x_range_) {
+        a.x = data_x;
+        a.x_ticks = multiples_inside(tx.step, data_x);
       }
     }
     int widest = 0;

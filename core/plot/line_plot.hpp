@@ -41,6 +41,8 @@ class LinePlot {
   // one quantity (a rate in 0..1) shown side by side. Not with equal axes.
   // Throws Error unless lo < hi, both finite.
   void set_y_range(double lo, double hi);
+  // The same for the x axis (a curve over a run's frames from 0).
+  void set_x_range(double lo, double hi);
 
   // A series of points (x[i], y[i]); non-finite points are skipped and break
   // the line. Throws Error if x and y differ in length. An empty name keeps
@@ -76,7 +78,7 @@ class LinePlot {
   int width_, height_;
   std::string title_, x_label_, y_label_;
   bool equal_axes_ = false;
-  std::optional<std::pair<double, double>> y_range_;
+  std::optional<std::pair<double, double>> y_range_, x_range_;
   std::vector<Series> series_;
 };
 

@@ -232,6 +232,7 @@ const Case kCases[] = {
     {"out_render_map_unwritable", "render-map --map-ply {file} --out {file}/x.png", 1, "x.png"},
     {"out_train_unwritable", "train --dataset {data} --out {file}/m.fsmodel", 1, "m.fsmodel"},
     {"out_optimise_is_a_file", "optimise --dataset {data} --out {file}", 1, "it is a file"},
+    {"optimise_seed_genome_short", "optimise --dataset {data} --seed-genome 0101 --out {out}", 2, "--seed-genome"},
 };
 
 

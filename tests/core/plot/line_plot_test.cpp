@@ -140,11 +140,26 @@ TEST(LinePlot, FixedYRangePlacesValuesOnItsScale) {
   EXPECT_NEAR(height_fraction(), (0.2 + 0.03) / 1.06, 0.02);  // 3 % of air below 0 and above 1
 }
 
-TEST(LinePlot, BadYRangeIsAnError) {
+TEST(LinePlot, FixedXRangePlacesValuesOnItsScale) {
+  // A vertical segment at x = 100 of a 0..1000 axis sits at a tenth of the
+  // width (3 % of air either side), not where nice ticks around 100 put it.
+  LinePlot plot;
+  SeriesStyle red;
+  red.colour = cv::Scalar(0, 0, 255);
+  plot.add_series("", {100.0, 100.0}, {0.0, 1.0}, red);
+  plot.add_series("", {900.0}, {0.5});
+  plot.set_x_range(0.0, 1000.0);
+  const cv::Rect area = plot.layout().plot_area;
+  const cv::Rect box = bounding_box_of(plot.render(), cv::Scalar(0, 0, 255));
+  EXPECT_NEAR((box.x + box.width / 2.0 - area.x) / (area.width - 1), (100.0 + 30.0) / 1060.0, 0.02);
+}
+
+TEST(LinePlot, BadRangeIsAnError) {
   LinePlot plot;
   EXPECT_THROW(plot.set_y_range(1.0, 1.0), Error);
   EXPECT_THROW(plot.set_y_range(1.0, 0.0), Error);
   EXPECT_THROW(plot.set_y_range(0.0, std::nan("")), Error);
+  EXPECT_THROW(plot.set_x_range(2.0, -1.0), Error);
 }
 
 TEST(LinePlot, EmptyPlotStillRenders) {
