@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include <opencv2/core/utility.hpp>
+
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
 #include "apps/genome_option.hpp"
@@ -81,6 +83,13 @@ std::optional<semantics::OptimiseResult> run_under_mpi(const Options& o) {
 #endif
 
 void run(Options& o) {
+  // OpenCV single-threaded: the evaluations are the parallel unit
+  // (--workers, MPI ranks), and OpenCV's own threads made the time term
+  // depend on the machine's load: cv::SIFT parallelises its pyramid and
+  // descriptors, so the same genome measured 0.065x SIFT's time beside a CI
+  // run and 0.141x on a quiet machine. Single-threaded, both sides of the
+  // ratio are one core's work, as in bench_semantics_modules.
+  cv::setNumThreads(1);
   // The run folder can be made (or is one) before any work.
   require_creatable_folder(o.run.out);
   if (o.config_given || std::filesystem::exists(o.config)) o.run.ga = semantics::load_ga_options(o.config);

@@ -37,8 +37,11 @@
 // keyframe stream does.
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <initializer_list>
+#include <optional>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -48,6 +51,7 @@
 #include "bench/bench_images.hpp"
 #include "semantics/descriptor/extraction.hpp"
 #include "semantics/descriptor/genome.hpp"
+#include "semantics/descriptor/genome_io.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
 
 namespace {
@@ -318,6 +322,48 @@ void BM_ThesisGenomeSparse(benchmark::State& state) {
   if (g_sift_sparse_seconds > 0) state.counters["sift_over_thesis"] = g_sift_sparse_seconds / per_image;
 }
 BENCHMARK(BM_ThesisGenomeSparse)->Unit(benchmark::kMillisecond);
+
+// Any genome (an optimise run's best.genome, issue 18's 10x), named by
+// $FACADESLAM_BENCH_GENOME (a genome file or the 0/1 string), through the
+// harness `evaluate labels` and the GA use, next to cv::SIFT with that
+// genome's patch size on the same keypoints (the GA's time term, here on one
+// core with CPU time): sift_over_genome. Skipped when the variable is unset.
+const Genome* bench_genome() {
+  static const std::optional<Genome> genome = []() -> std::optional<Genome> {
+    const char* value = std::getenv("FACADESLAM_BENCH_GENOME");
+    if (!value || !*value) return std::nullopt;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(value, ec)) return load_genome(value);
+    return Genome::parse(value, "FACADESLAM_BENCH_GENOME");
+  }();
+  return genome ? &*genome : nullptr;
+}
+
+double g_genome_sift_seconds = 0.0;
+
+double run_genome_harness(benchmark::State& state, std::string_view name, const Genome& genome) {
+  const auto descriptor = make_point_descriptor(name, genome);
+  cv::Mat d;
+  const double seconds = seconds_per_image(state, grid_keypoints().size(), [&] {
+    d = descriptor->compute(frame(), grid_keypoints());
+    benchmark::DoNotOptimize(d.data);
+  });
+  state.counters["values"] = d.cols;
+  return seconds;
+}
+
+void BM_GivenGenomeSiftPeer(benchmark::State& state) {
+  if (!bench_genome()) return state.SkipWithError("set FACADESLAM_BENCH_GENOME to a genome file or string");
+  g_genome_sift_seconds = run_genome_harness(state, "sift", *bench_genome());
+}
+BENCHMARK(BM_GivenGenomeSiftPeer)->Unit(benchmark::kMillisecond);
+
+void BM_GivenGenome(benchmark::State& state) {
+  if (!bench_genome()) return state.SkipWithError("set FACADESLAM_BENCH_GENOME to a genome file or string");
+  const double per_image = run_genome_harness(state, "modular", *bench_genome());
+  if (g_genome_sift_seconds > 0) state.counters["sift_over_genome"] = g_genome_sift_seconds / per_image;
+}
+BENCHMARK(BM_GivenGenome)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

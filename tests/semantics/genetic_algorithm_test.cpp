@@ -3,6 +3,8 @@
 // deterministic and climbs a known objective, and a checkpoint resumes a
 // run exactly.
 #include <algorithm>
+#include <filesystem>
+#include <string>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -185,6 +187,29 @@ TEST(GeneticAlgorithm, RejectsACheckpointOfAnotherRun) {
   state["rng_state"] = "not a state";
   EXPECT_THROW(GeneticAlgorithm::from_json(state, o, "x.json"), Error);
   EXPECT_THROW(GeneticAlgorithm::from_json(nlohmann::json::object(), o, "x.json"), Error);
+}
+
+}  // namespace
+}  // namespace facadeslam::semantics
+
+namespace facadeslam::semantics {
+namespace {
+
+// Every GA settings file the project ships loads (unknown or malformed keys
+// would fail), and the variants differ from the defaults where they say so.
+TEST(GaOptions, EveryShippedConfigLoads) {
+  const std::filesystem::path configs = "configs";  // tests run from the project root
+  int loaded = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(configs)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("optimise", 0) != 0 || entry.path().extension() != ".yaml") continue;
+    EXPECT_NO_THROW(load_ga_options(entry.path())) << name;
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 3);
+  const GaOptions refine = load_ga_options(configs / "optimise-refine.yaml");
+  EXPECT_DOUBLE_EQ(refine.weights.average, 0.6);
+  EXPECT_DOUBLE_EQ(refine.weights.overall, 0.4);
 }
 
 }  // namespace
