@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/util/median.hpp"
 #include "core/util/resident_memory.hpp"
 
 namespace facadeslam::apps {
@@ -42,13 +43,6 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
 
 namespace {
 
-double median_of(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 // The entries of `all` after the first `from`.
 std::vector<double> tail(const std::vector<double>& all, std::size_t from) {
   return {all.begin() + static_cast<std::ptrdiff_t>(std::min(from, all.size())), all.end()};
@@ -63,8 +57,8 @@ void ReplayLog::sample_resources(const System& system) {
   s.resident_mib = static_cast<double>(resident_memory_bytes().value_or(0)) / (1024.0 * 1024.0);
   s.keyframes = system.map().keyframe_count();
   s.points = system.map().point_count();
-  s.frame_ms_median = median_of(tail(total_ms, frames - kSampleEvery));
-  s.tracker_ms_median = median_of(tail(tracker_ms, tracker_ms_at_last_sample_));
+  s.frame_ms_median = median(tail(total_ms, frames - kSampleEvery));
+  s.tracker_ms_median = median(tail(tracker_ms, tracker_ms_at_last_sample_));
   tracker_ms_at_last_sample_ = tracker_ms.size();
   resources.push_back(s);
 }

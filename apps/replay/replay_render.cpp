@@ -17,6 +17,7 @@
 #include "core/map/semantic_classes.hpp"
 #include "core/plot/png_file.hpp"
 #include "core/util/error.hpp"
+#include "core/util/median.hpp"
 #include "core/util/stopwatch.hpp"
 #include "render/ar/ar_view.hpp"
 #include "render/ar/contact_sheet.hpp"
@@ -56,13 +57,6 @@ PointColour point_colour(const PointSnapshot& point) {
   }
   const int level = std::clamp(point.source.level, 0, static_cast<int>(kLevelBgr.size()) - 1);
   return {kLevelBgr[static_cast<std::size_t>(level)], "level " + std::to_string(level)};
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
 }
 
 int even(int n) { return n + (n & 1); }
@@ -163,7 +157,7 @@ struct ReplayRender::Impl {
     // Follow the current camera, or the last tracked one while lost.
     Eigen::Isometry3d follow = T_w_c ? *T_w_c : Eigen::Isometry3d::Identity();
     if (!T_w_c) follow = keyframes.back().T_c_w.inverse().isometry();
-    const double depth = replay_render_detail::median(depths);
+    const double depth = median(depths);
     const render::MapViewCamera view = render::ar::follow_camera(
         follow, render::view_axes_from_cameras(content.keyframes_T_c_w), depth, map_view_size.width,
         map_view_size.height);

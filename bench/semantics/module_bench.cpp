@@ -205,10 +205,11 @@ BENCHMARK(BM_SiftPatchDiameter)->Unit(benchmark::kMillisecond)->Iterations(1);
 void BM_SiftSparse(benchmark::State& state) { g_sift_sparse_seconds = run_sift(state, sparse_keypoints(), sift_size()); }
 BENCHMARK(BM_SiftSparse)->Unit(benchmark::kMillisecond);
 
-// PointDescriptor `name` (evaluate labels' harness) on the grid keypoints;
-// returns the CPU seconds per image.
-double run_point_descriptor(benchmark::State& state, std::string_view name) {
-  const auto descriptor = make_point_descriptor(name, Genome::thesis_best());
+// PointDescriptor `name` (evaluate labels' and the GA's harness) for
+// `genome` on the grid keypoints; returns the CPU seconds per image.
+double run_point_descriptor(benchmark::State& state, std::string_view name,
+                            const Genome& genome = Genome::thesis_best()) {
+  const auto descriptor = make_point_descriptor(name, genome);
   cv::Mat d;
   const double seconds = seconds_per_image(state, grid_keypoints().size(), [&] {
     d = descriptor->compute(frame(), grid_keypoints());
@@ -341,26 +342,15 @@ const Genome* bench_genome() {
 
 double g_genome_sift_seconds = 0.0;
 
-double run_genome_harness(benchmark::State& state, std::string_view name, const Genome& genome) {
-  const auto descriptor = make_point_descriptor(name, genome);
-  cv::Mat d;
-  const double seconds = seconds_per_image(state, grid_keypoints().size(), [&] {
-    d = descriptor->compute(frame(), grid_keypoints());
-    benchmark::DoNotOptimize(d.data);
-  });
-  state.counters["values"] = d.cols;
-  return seconds;
-}
-
 void BM_GivenGenomeSiftPeer(benchmark::State& state) {
   if (!bench_genome()) return state.SkipWithError("set FACADESLAM_BENCH_GENOME to a genome file or string");
-  g_genome_sift_seconds = run_genome_harness(state, "sift", *bench_genome());
+  g_genome_sift_seconds = run_point_descriptor(state, "sift", *bench_genome());
 }
 BENCHMARK(BM_GivenGenomeSiftPeer)->Unit(benchmark::kMillisecond);
 
 void BM_GivenGenome(benchmark::State& state) {
   if (!bench_genome()) return state.SkipWithError("set FACADESLAM_BENCH_GENOME to a genome file or string");
-  const double per_image = run_genome_harness(state, "modular", *bench_genome());
+  const double per_image = run_point_descriptor(state, "modular", *bench_genome());
   if (g_genome_sift_seconds > 0) state.counters["sift_over_genome"] = g_genome_sift_seconds / per_image;
 }
 BENCHMARK(BM_GivenGenome)->Unit(benchmark::kMillisecond);

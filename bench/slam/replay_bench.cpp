@@ -21,6 +21,7 @@
 
 #include "bench/bench_sequences.hpp"
 #include "core/image/image_pyramid.hpp"
+#include "core/util/median.hpp"
 #include "sequences/open_sequence.hpp"
 #include "slam/system.hpp"
 
@@ -30,12 +31,6 @@ using namespace facadeslam;
 
 using DemoFrames = bench::BenchSequence;
 const DemoFrames* demo() { return bench::demo_sequence(); }
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
 
 // The shipped semantic settings and model (configs/semantics.yaml).
 SemanticsOptions semantics_on() {

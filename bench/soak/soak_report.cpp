@@ -17,21 +17,17 @@
 
 #include "core/plot/line_plot.hpp"
 #include "core/plot/png_file.hpp"
+#include "core/util/median.hpp"
 
 namespace {
 
+using facadeslam::median;
 using facadeslam::plot::LinePlot;
 
 std::vector<double> column(const nlohmann::json& resources, const char* name) {
   std::vector<double> out;
   for (const auto& v : resources.at(name)) out.push_back(v.get<double>());
   return out;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
-  return values[values.size() / 2];
 }
 
 // Least-squares slope of y against x.

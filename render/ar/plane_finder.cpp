@@ -1,4 +1,5 @@
 #include "render/ar/plane_finder.hpp"
+#include "core/util/median.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,13 +12,6 @@ namespace facadeslam::render::ar {
 // Named, so that the unity build's other render files cannot clash with these.
 namespace plane_finder_detail {
 namespace {
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 // Least-squares plane through the points: through their mean, normal along
 // the smallest eigenvector of their scatter.
@@ -57,12 +51,12 @@ double plane_inlier_distance(const std::vector<Eigen::Vector3d>& points_w, const
     std::vector<double> values;
     values.reserve(points_w.size());
     for (const Eigen::Vector3d& p : points_w) values.push_back(p[axis]);
-    centre[axis] = plane_finder_detail::median(std::move(values));
+    centre[axis] = median(std::move(values));
   }
   std::vector<double> distances;
   distances.reserve(points_w.size());
   for (const Eigen::Vector3d& p : points_w) distances.push_back((p - centre).norm());
-  return options.relative_threshold * plane_finder_detail::median(std::move(distances));
+  return options.relative_threshold * median(std::move(distances));
 }
 
 std::optional<PlaneFit> find_dominant_plane(const std::vector<Eigen::Vector3d>& points_w,

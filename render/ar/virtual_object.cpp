@@ -1,4 +1,5 @@
 #include "render/ar/virtual_object.hpp"
+#include "core/util/median.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -26,12 +27,6 @@ const std::array<Face, 6>& unit_faces() {
       {V(-0.5, -0.5, 0), V(1, 0, 0), V(0, 0, 1), V(0, -1, 0)},   // -y
   }};
   return faces;
-}
-
-double median(std::vector<double> values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
 }
 
 }  // namespace
@@ -128,7 +123,7 @@ std::optional<VirtualObject> place_on_plane(const PlaneFit& fit, const std::vect
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<double> values;
     for (std::size_t k = 0; k < keep; ++k) values.push_back(points_w[by_angle[k].second][axis]);
-    anchor[axis] = virtual_object_detail::median(std::move(values));
+    anchor[axis] = median(std::move(values));
   }
   anchor -= plane.signed_distance(anchor) * plane.normal_w;
 

@@ -14,6 +14,7 @@
 
 #include "core/util/angles.hpp"
 #include "core/util/error.hpp"
+#include "core/util/median.hpp"
 #include "slam/init/essential_refinement.hpp"
 #include "slam/init/homography_refinement.hpp"
 #include "slam/init/model_scoring.hpp"
@@ -25,13 +26,6 @@ namespace {
 // Refine, re-score, refine again while the inliers change: two or three
 // rounds settle in practice.
 constexpr int kMaxRefinementRounds = 3;
-
-double median_of(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
-}
 
 TwoViewResult& fail(TwoViewResult& result, InitStatus status, std::string reason) {
   result.status = status;
@@ -122,7 +116,7 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
   // 1. Enough image motion to be worth a try?
   std::vector<double> motion(n);
   for (std::size_t i = 0; i < n; ++i) motion[i] = (pixels1[i] - pixels0[i]).norm();
-  result.median_image_motion_px = median_of(motion);
+  result.median_image_motion_px = median(motion);
   const double diagonal = std::hypot(static_cast<double>(camera.width()), static_cast<double>(camera.height()));
   const double min_motion = options.min_image_motion_fraction * diagonal;
   if (result.median_image_motion_px < min_motion)
@@ -300,7 +294,7 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
   std::vector<double> depths;
   depths.reserve(final_eval.good_points_c0.size());
   for (const Eigen::Vector3d& p : final_eval.good_points_c0) depths.push_back(p.z());
-  const double scale = 1.0 / median_of(depths);
+  const double scale = 1.0 / median(depths);
   result.T_c1_c0 = SE3d(T_c1_c0.so3(), T_c1_c0.translation() * scale);
   for (std::size_t k = 0; k < final_eval.good.size(); ++k) {
     const auto i = static_cast<std::size_t>(final_eval.good[k]);
