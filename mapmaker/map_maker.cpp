@@ -221,11 +221,7 @@ void MapMaker::cull_redundant_keyframes(KeyFrame::Id newest) {
     const std::shared_ptr<KeyFrame> gone = by_id.at(id);
     by_id.erase(id);
     // The frames tracked against it follow the nearest keyframe left.
-    const KeyFrame* parent = nullptr;
-    for (const auto& [other_id, other] : by_id)
-      if (!parent || (other->centre_w() - gone->centre_w()).squaredNorm() <
-                         (parent->centre_w() - gone->centre_w()).squaredNorm())
-        parent = other.get();
+    const KeyFrame* parent = nearest_keyframe(by_id, gone->centre_w());
     // Its points' sources and views move to the keyframes still measuring
     // them: for the source the finest level (the sharpest patch), then the
     // newest; for the view the newest, as MapPoint::view() is defined.

@@ -3,6 +3,16 @@
 #include "core/util/error.hpp"
 
 namespace facadeslam {
+namespace {
+
+// Adds a pass's counts and corrupt files to the run's.
+void add_pass(ReadStats& run, const ReadStats& pass) {
+  run.frames_read += pass.frames_read;
+  run.frames_skipped_corrupt += pass.frames_skipped_corrupt;
+  run.corrupt_paths.insert(run.corrupt_paths.end(), pass.corrupt_paths.begin(), pass.corrupt_paths.end());
+}
+
+}  // namespace
 
 LoopingSource::LoopingSource(Opener open, std::size_t passes) : open_(std::move(open)), passes_(passes) {
   if (passes_ == 0) throw Error("sequence options: loops must be at least 1 (got 0)");
@@ -25,11 +35,7 @@ std::optional<Frame> LoopingSource::next() {
     }
     // Pass 0 delivered nothing: there is nothing to loop.
     if (pass_ + 1 >= passes_ || !first_timestamp_) return std::nullopt;
-    const ReadStats& done = current_->stats();
-    finished_passes_.frames_read += done.frames_read;
-    finished_passes_.frames_skipped_corrupt += done.frames_skipped_corrupt;
-    finished_passes_.corrupt_paths.insert(finished_passes_.corrupt_paths.end(), done.corrupt_paths.begin(),
-                                          done.corrupt_paths.end());
+    add_pass(finished_passes_, current_->stats());
     // One frame interval across the seam: pass 0's last one (a single-frame
     // sequence has none; a second then).
     const double interval = previous_timestamp_ ? *last_timestamp_ - *previous_timestamp_ : 1.0;
@@ -45,10 +51,7 @@ std::size_t LoopingSource::size_hint() const { return current_->size_hint() * pa
 
 const ReadStats& LoopingSource::stats() const {
   combined_ = finished_passes_;
-  const ReadStats& now = current_->stats();
-  combined_.frames_read += now.frames_read;
-  combined_.frames_skipped_corrupt += now.frames_skipped_corrupt;
-  combined_.corrupt_paths.insert(combined_.corrupt_paths.end(), now.corrupt_paths.begin(), now.corrupt_paths.end());
+  add_pass(combined_, current_->stats());
   return combined_;
 }
 

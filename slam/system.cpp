@@ -177,13 +177,7 @@ void System::record_pose(const FrameReport& report) {
   // keyframes every frame.
   const Eigen::Vector3d centre = report.T_c_w.inverse().translation();
   const auto reference = map_.read([&](const MapView& view) -> std::optional<std::pair<KeyFrame::Id, SE3d>> {
-    const KeyFrame* nearest = nullptr;
-    double nearest_distance = 0.0;
-    for (const auto& [id, kf] : view.keyframes())
-      if (const double d = (kf->centre_w() - centre).squaredNorm(); !nearest || d < nearest_distance) {
-        nearest = kf.get();
-        nearest_distance = d;
-      }
+    const KeyFrame* nearest = nearest_keyframe(view.keyframes(), centre);
     if (!nearest) return std::nullopt;
     return std::pair{nearest->id(), nearest->T_c_w()};
   });

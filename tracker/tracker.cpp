@@ -339,10 +339,6 @@ void Tracker::consider_keyframe(const Frame& frame, TrackingResult& result, std:
 Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {
   if (keyframes_.size() >= options_.keyframe_max_queue) return KeyFrameReason::none;
   const std::size_t frames = frame_index - last_keyframe_frame_;
-  // The view is leaving the map (forward motion, a fast turn): a keyframe
-  // as soon as the points found fall below a share of those found when the
-  // last keyframe was made, even on dodgy tracking, which is what comes
-  // next otherwise.
   // A keyframe near the camera (in units of its scene depth) that looks the
   // same way already covers this view. Near keyframes that all look
   // elsewhere: the camera has turned.
@@ -353,10 +349,19 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
     return (kf.centre_w() - centre).norm() / std::max(kf.mean_depth, 1e-9) <= min_distance;
   };
   const auto looks_the_same_way = [&](const KeyFrameSnapshot& kf) { return kf.optical_axis_w().dot(axis) >= min_cos; };
-  const bool dodgy_or_good = result.quality != TrackingQuality::bad;
-  if (dodgy_or_good && frames >= static_cast<std::size_t>(options_.keyframe_min_frames_overlap) &&
+  // The keyframes, copied once and only when a rule needs them.
+  std::optional<std::vector<KeyFrameSnapshot>> snapshot;
+  const auto keyframes = [&]() -> const std::vector<KeyFrameSnapshot>& {
+    if (!snapshot) snapshot = map_.snapshot_keyframes();  // ordered by id: the newest last
+    return *snapshot;
+  };
+
+  // The view is leaving the map (forward motion, a fast turn): a keyframe
+  // as soon as the points found fall below a share of those found when the
+  // last keyframe was made, even on dodgy tracking, which is what comes
+  // next otherwise; but not on a revisit (tracker_options.hpp).
+  if (result.quality != TrackingQuality::bad && frames >= static_cast<std::size_t>(options_.keyframe_min_frames_overlap) &&
       result.fine_found < options_.keyframe_min_overlap * found_at_keyframe_) {
-    const auto keyframes = map_.snapshot_keyframes();  // ordered by id: the newest last
     const auto covers = [&](const KeyFrameSnapshot& kf) {
       return near_by(kf, options_.keyframe_min_distance) && looks_the_same_way(kf);
     };
@@ -365,8 +370,8 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
              newest.keyframe->frame_index() + static_cast<std::size_t>(options_.keyframe_revisit_age_frames) <=
                  frame_index;
     };
-    const bool revisit = options_.keyframe_overlap_skips_revisits && !keyframes.empty() && settled(keyframes.back()) &&
-                         std::any_of(keyframes.begin(), keyframes.end(), covers);
+    const bool revisit = options_.keyframe_overlap_skips_revisits && !keyframes().empty() &&
+                         settled(keyframes().back()) && std::any_of(keyframes().begin(), keyframes().end(), covers);
     if (!revisit) return KeyFrameReason::moved;
   }
   if (result.quality != TrackingQuality::good) return KeyFrameReason::none;
@@ -377,7 +382,7 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
   const double min_distance =
       options_.keyframe_min_distance * (last_keyframe_turned_ ? options_.keyframe_distance_after_turn : 1.0);
   bool near = false;
-  for (const KeyFrameSnapshot& kf : map_.snapshot_keyframes()) {
+  for (const KeyFrameSnapshot& kf : keyframes()) {
     if (!near_by(kf, min_distance)) continue;
     near = true;
     if (looks_the_same_way(kf)) return KeyFrameReason::none;

@@ -8,6 +8,18 @@ void NewPoints::append(NewPoints more) {
                       std::make_move_iterator(more.observations.end()));
 }
 
+const KeyFrame* nearest_keyframe(const std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>>& keyframes,
+                                 const Eigen::Vector3d& centre_w) {
+  const KeyFrame* nearest = nullptr;
+  double nearest_distance = 0.0;
+  for (const auto& [id, kf] : keyframes)
+    if (const double d = (kf->centre_w() - centre_w).squaredNorm(); !nearest || d < nearest_distance) {
+      nearest = kf.get();
+      nearest_distance = d;
+    }
+  return nearest;
+}
+
 std::shared_ptr<KeyFrame> MapView::keyframe(KeyFrame::Id id) const {
   const auto it = map_.keyframes_.find(id);
   return it == map_.keyframes_.end() ? nullptr : it->second;

@@ -73,6 +73,12 @@ struct NewPoints {
   void append(NewPoints more);
 };
 
+// The keyframe whose centre is nearest `centre_w` (the lowest id on a tie),
+// or null when there is none. Their poses must hold still meanwhile: call it
+// under the map's lock (on MapView::keyframes) or from the map maker.
+const KeyFrame* nearest_keyframe(const std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>>& keyframes,
+                                 const Eigen::Vector3d& centre_w);
+
 class Map;
 
 // The map as seen under its shared lock (Map::read); valid only inside the visit.
