@@ -206,18 +206,19 @@ int run_replay(ReplayOptions o) {
   // Frames the reader skipped are not in the count above: say so.
   if (const std::size_t skipped = source->stats().frames_skipped_corrupt; skipped > 0)
     std::printf("replay: %zu corrupt frames skipped (not counted above)\n", skipped);
-  if (const Json* ate = outputs.report.find("ate_rmse_m")) {
-    std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path", ate->as_double(),
-                outputs.report.find("ate_percent_of_path")->as_double());
-    const Json* online = outputs.report.find("ate_online");
-    const Json* online_percent = online ? online->find("ate_percent_of_path") : nullptr;
-    if (online_percent) std::printf(" (as tracked: %.3f %%)", online_percent->as_double());
+  const Json& report = outputs.report;
+  if (report.contains("ate_rmse_m")) {
+    std::printf("replay: ATE (Sim3) %.4f m = %.3f %% of the path", report["ate_rmse_m"].get<double>(),
+                report["ate_percent_of_path"].get<double>());
+    if (report.contains("ate_online") && report["ate_online"].contains("ate_percent_of_path"))
+      std::printf(" (as tracked: %.3f %%)", report["ate_online"]["ate_percent_of_path"].get<double>());
     std::printf("\n");
   }
-  if (const Json* r = outputs.report.find("render"); r && ar_render)
+  if (report.contains("render") && ar_render)
     std::printf("replay: rendered %.0f frames (%.0f without overlay) at %.1f frames/s -> %s (video: %s)\n",
-                r->find("frames_rendered")->as_double(), r->find("frames_without_overlay")->as_double(), replay_fps,
-                o.render.string().c_str(), ar_render->video_codec().c_str());
+                report["render"]["frames_rendered"].get<double>(),
+                report["render"]["frames_without_overlay"].get<double>(), replay_fps, o.render.string().c_str(),
+                ar_render->video_codec().c_str());
   if (info.label_accuracy && info.label_accuracy->accuracy())
     std::printf("replay: label accuracy %.3f over %zu labelled points\n", *info.label_accuracy->accuracy(),
                 info.label_accuracy->evaluated);

@@ -100,7 +100,7 @@ Json report_json(const CalibrationRun& run) {
   camera["cy"] = r.camera.cy();
   r.camera.visit([&](const auto& m) {
     if constexpr (std::is_same_v<std::decay_t<decltype(m)>, PinholeRadTan>)
-      camera["distortion"] = Json::Array{m.k1, m.k2, m.p1, m.p2, m.k3};
+      camera["distortion"] = Json::array({m.k1, m.k2, m.p1, m.p2, m.k3});
     else
       camera["w"] = m.w;
   });

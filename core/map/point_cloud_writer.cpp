@@ -60,7 +60,7 @@ std::size_t write_labelled_point_cloud(const std::filesystem::path& ply_path, co
     Json entry = Json::object();
     entry["id"] = static_cast<int>(c.id);
     entry["name"] = std::string(c.name);
-    entry["colour_rgb"] = Json::Array{int(c.r), int(c.g), int(c.b)};
+    entry["colour_rgb"] = Json::array({int(c.r), int(c.g), int(c.b)});
     entry["points"] = counts.count(c.id) ? counts[c.id] : std::size_t{0};
     classes.push_back(entry);
   };

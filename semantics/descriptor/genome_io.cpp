@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <set>
 #include <sstream>
-
-#include <opencv2/core.hpp>
 
 #include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
@@ -27,36 +26,37 @@ const std::set<std::string>& known_keys() {
 
 class JsonReader {
  public:
-  JsonReader(const cv::FileNode& root, std::string_view where) : root_(root), where_(where) {}
+  JsonReader(const Json& root, std::string_view where) : root_(root), where_(where) {}
 
   [[noreturn]] void fail(const std::string& what) const { throw Error(where_ + ": " + what); }
 
-  cv::FileNode required(const std::string& key) const {
-    const cv::FileNode node = root_[key];
-    if (node.empty() || node.isNone()) fail("missing key '" + key + "'");
-    return node;
+  const Json& required(const std::string& key) const {
+    const auto it = root_.find(key);
+    if (it == root_.end() || it->is_null()) fail("missing key '" + key + "'");
+    return *it;
   }
 
   int integer(const std::string& key) const {
-    const cv::FileNode node = required(key);
-    if (!node.isInt()) fail("key '" + key + "' must be an integer");
-    return static_cast<int>(node);
+    const Json& node = required(key);
+    if (!node.is_number_integer() || node.get<std::int64_t>() != node.get<int>())
+      fail("key '" + key + "' must be an integer");
+    return node.get<int>();
   }
 
   double number(const std::string& key) const {
-    const cv::FileNode node = required(key);
-    if (!node.isInt() && !node.isReal()) fail("key '" + key + "' must be a number");
-    return static_cast<double>(node);
+    const Json& node = required(key);
+    if (!node.is_number()) fail("key '" + key + "' must be a number");
+    return node.get<double>();
   }
 
   std::string text(const std::string& key) const {
-    const cv::FileNode node = required(key);
-    if (!node.isString()) fail("key '" + key + "' must be a string");
-    return static_cast<std::string>(node);
+    const Json& node = required(key);
+    if (!node.is_string()) fail("key '" + key + "' must be a string");
+    return node.get<std::string>();
   }
 
  private:
-  cv::FileNode root_;
+  const Json& root_;
   std::string where_;
 };
 
@@ -114,18 +114,18 @@ Json genome_to_json(const Genome& genome) {
 }
 
 Genome genome_from_json(std::string_view json_text, std::string_view where) {
-  cv::FileStorage storage;
-  try {
-    storage.open(std::string(json_text), cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_JSON);
-  } catch (const cv::Exception& e) {
-    throw Error(std::string(where) + ": not valid JSON (" + e.err + ")");
-  }
-  const cv::FileNode root = storage.root();
+  const Json root = [&] {
+    try {
+      return Json::parse(json_text);
+    } catch (const Json::parse_error& e) {
+      throw Error(std::string(where) + ": not valid JSON (" + e.what() + ")");
+    }
+  }();
   const JsonReader in(root, where);
-  if (!storage.isOpened() || !root.isMap()) in.fail("expected a JSON object describing a genome");
+  if (!root.is_object()) in.fail("expected a JSON object describing a genome");
 
-  for (const std::string& key : root.keys())
-    if (!known_keys().count(key)) in.fail("unknown key '" + key + "'");
+  for (const auto& item : root.items())
+    if (!known_keys().count(item.key())) in.fail("unknown key '" + item.key() + "'");
   if (in.text("format") != kFormat) in.fail("key 'format' must be \"" + std::string(kFormat) + "\"");
   if (in.integer("version") != kVersion) in.fail("key 'version' must be " + std::to_string(kVersion));
 
@@ -142,25 +142,25 @@ Genome genome_from_json(std::string_view json_text, std::string_view where) {
   p.split_variables = table_value(in, "split_variables", in.integer("split_variables"), kSplitVariables);
   p.canny_kernel = table_value(in, "canny_kernel", in.integer("canny_kernel"), kCannyKernels);
   p.canny_low_threshold = table_value(in, "canny_low_threshold", in.integer("canny_low_threshold"), kCannyLowThresholds);
-  if (!root["canny_high_threshold"].empty() && in.integer("canny_high_threshold") != p.canny_high_threshold())
+  if (root.contains("canny_high_threshold") && in.integer("canny_high_threshold") != p.canny_high_threshold())
     in.fail("key 'canny_high_threshold' must be 3 x canny_low_threshold = " + std::to_string(p.canny_high_threshold()));
   const std::string op = in.text("gradient_operator");
   const auto parsed_op = parse_gradient_operator(op);
   if (!parsed_op) in.fail("key 'gradient_operator' = \"" + op + "\" is not one of Sobel, Scharr");
   p.gradient_operator = *parsed_op;
 
-  const cv::FileNode values = in.required("active_values");
-  if (!values.isSeq()) in.fail("key 'active_values' must be an array of value names");
-  for (const cv::FileNode& node : values) {
-    if (!node.isString()) in.fail("key 'active_values' must hold only strings (value names)");
-    const std::string name = static_cast<std::string>(node);
+  const Json& values = in.required("active_values");
+  if (!values.is_array()) in.fail("key 'active_values' must be an array of value names");
+  for (const Json& node : values) {
+    if (!node.is_string()) in.fail("key 'active_values' must hold only strings (value names)");
+    const std::string name = node.get<std::string>();
     const auto index = value_index(name);
     if (!index) in.fail("key 'active_values' names an unknown value \"" + name + "\"");
     if (p.activation.test(static_cast<std::size_t>(*index)))
       in.fail("key 'active_values' lists \"" + name + "\" twice");
     p.activation.set(static_cast<std::size_t>(*index));
   }
-  if (!root["active_value_count"].empty() && in.integer("active_value_count") != p.active_value_count())
+  if (root.contains("active_value_count") && in.integer("active_value_count") != p.active_value_count())
     in.fail("key 'active_value_count' = " + std::to_string(in.integer("active_value_count")) +
             " but 'active_values' lists " + std::to_string(p.active_value_count()));
   return Genome::encode(p);

@@ -10,6 +10,8 @@
 
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
 namespace facadeslam::test {
 
 struct CliResult {
@@ -46,16 +48,24 @@ inline CliResult run_cli(const std::string& binary, const std::string& arguments
   return result;
 }
 
-// The number after the first `"key":` in a JSON text; NaN when absent or null.
+// The number under the first `key` in a JSON text, in document order at any
+// depth; NaN when the text does not parse, the key is absent or not a number.
+inline double json_number(const nlohmann::ordered_json& json, const std::string& key) {
+  if (json.is_object()) {
+    for (const auto& item : json.items()) {
+      if (item.key() == key) return item.value().is_number() ? item.value().get<double>() : std::nan("");
+      if (const double inner = json_number(item.value(), key); !std::isnan(inner)) return inner;
+    }
+  } else if (json.is_array()) {
+    for (const auto& element : json)
+      if (const double inner = json_number(element, key); !std::isnan(inner)) return inner;
+  }
+  return std::nan("");
+}
+
 inline double json_number(const std::string& json, const std::string& key) {
-  std::string quoted = "\"";
-  quoted.append(key).append("\":");
-  const auto at = json.find(quoted);
-  if (at == std::string::npos) return std::nan("");
-  const char* start = json.c_str() + at + quoted.size();
-  char* end = nullptr;
-  const double value = std::strtod(start, &end);
-  return end == start ? std::nan("") : value;
+  const auto parsed = nlohmann::ordered_json::parse(json, nullptr, /*allow_exceptions=*/false);
+  return parsed.is_discarded() ? std::nan("") : json_number(parsed, key);
 }
 
 }  // namespace facadeslam::test

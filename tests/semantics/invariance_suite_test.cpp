@@ -251,13 +251,13 @@ InvarianceResult hand_made_result() {
 
 TEST(InvarianceReport, JsonHoldsEveryCaseWithValuesAndRatesPerDescriptor) {
   const std::string json = to_json(hand_made_result()).dump();
-  EXPECT_THAT(json, HasSubstr("\"case\": \"rotation\""));
-  EXPECT_THAT(json, HasSubstr("\"case\": \"jpeg\""));
-  EXPECT_THAT(json, HasSubstr("\"values\": [0, 90]"));
-  EXPECT_THAT(json, HasSubstr("\"sift\": [1, 0.25]"));
-  EXPECT_THAT(json, HasSubstr("\"edd\": [1, null]"));  // no keypoint, no rate
-  EXPECT_THAT(json, HasSubstr("\"reference_keypoints\": 40"));
-  EXPECT_THAT(json, HasSubstr("\"width\": 113"));
+  EXPECT_THAT(json, HasSubstr("\"case\":\"rotation\""));
+  EXPECT_THAT(json, HasSubstr("\"case\":\"jpeg\""));
+  EXPECT_THAT(json, HasSubstr("\"values\":[0.0,90.0]"));
+  EXPECT_THAT(json, HasSubstr("\"sift\":[1.0,0.25]"));
+  EXPECT_THAT(json, HasSubstr("\"edd\":[1.0,null]"));  // no keypoint, no rate
+  EXPECT_THAT(json, HasSubstr("\"reference_keypoints\":40"));
+  EXPECT_THAT(json, HasSubstr("\"width\":113"));
 }
 
 TEST(InvarianceReport, TableHasARowPerValueAndAColumnPerDescriptor) {

@@ -354,10 +354,10 @@ TEST(LabelComparison, OneRowPerDescriptorWithRecallsAndTimes) {
   const Json json = comparison_json(runs);
   ASSERT_TRUE(json.is_array());
   const std::string text = json.dump();
-  EXPECT_THAT(text, HasSubstr("\"descriptor\": \"modular\""));
-  EXPECT_THAT(text, HasSubstr("\"descriptor\": \"sift\""));
-  EXPECT_THAT(text, HasSubstr("\"window\": 0.5"));
-  EXPECT_THAT(text, HasSubstr("\"extraction_ms_per_image\": 2"));
+  EXPECT_THAT(text, HasSubstr("\"descriptor\":\"modular\""));
+  EXPECT_THAT(text, HasSubstr("\"descriptor\":\"sift\""));
+  EXPECT_THAT(text, HasSubstr("\"window\":0.5"));
+  EXPECT_THAT(text, HasSubstr("\"extraction_ms_per_image\":2"));
 }
 
 }  // namespace

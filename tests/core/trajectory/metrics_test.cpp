@@ -181,9 +181,9 @@ TEST(EvaluateTrajectory, JsonHasTheFieldNamesAsKeys) {
   const Json j = to_json(e);
   for (const char* key : {"pairs", "scale", "ate_rmse_m", "ate_mean_m", "ate_median_m", "ate_max_m",
                           "rpe_trans_rmse_m", "rpe_rot_rmse_deg", "path_length_m", "ate_percent_of_path"})
-    EXPECT_NE(j.find(key), nullptr) << key;
-  EXPECT_EQ(j.find("pairs")->as_double(), 20.0);
-  EXPECT_DOUBLE_EQ(j.find("path_length_m")->as_double(), e.path_length_m);
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j.at("pairs").get<double>(), 20.0);
+  EXPECT_DOUBLE_EQ(j.at("path_length_m").get<double>(), e.path_length_m);
 }
 
 }  // namespace
