@@ -45,11 +45,12 @@ void report(const Options& o, const semantics::OptimiseResult& r) {
   }
   std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n",
               r.generations, r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
-  const double busy = r.describe_seconds + r.train_seconds + r.validate_seconds;
+  const double busy = r.describe_seconds + r.train_seconds + r.validate_seconds + r.invariance_seconds;
   if (busy > 0)
     std::printf("optimise: evaluation time: %.0f %% describing the training sample, %.0f %% training forests, "
-                "%.0f %% validating (SIFT timing included)\n",
-                100 * r.describe_seconds / busy, 100 * r.train_seconds / busy, 100 * r.validate_seconds / busy);
+                "%.0f %% validating (SIFT timing included), %.0f %% invariance cases\n",
+                100 * r.describe_seconds / busy, 100 * r.train_seconds / busy, 100 * r.validate_seconds / busy,
+                100 * r.invariance_seconds / busy);
   std::printf("optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, %.3f x cv::SIFT's time, "
               "%d values -> %s\n",
               r.best.best, r.best.generation, r.best_evaluation.overall, r.best_evaluation.average,

@@ -52,6 +52,9 @@ GaOptions load_ga_options(const std::filesystem::path& path) {
   o.plateau_generations = root.get_int("plateau_generations", Range::closed(0, 100000), o.plateau_generations);
   o.plateau_tolerance = root.get_double("plateau_tolerance", Range::closed(0, 1), o.plateau_tolerance);
   o.validation_share = root.get_double("validation_share", Range::closed(0.01, 0.99), o.validation_share);
+  o.folds = root.get_int("folds", Range::closed(1, 20), o.folds);
+  o.invariance_images = static_cast<std::size_t>(
+      root.get_int("invariance_images", Range::closed(1, 1000), static_cast<int>(o.invariance_images)));
   o.max_train_images = static_cast<std::size_t>(root.get_int("max_train_images", Range::closed(0, 1000000), 0));
   o.max_validation_images =
       static_cast<std::size_t>(root.get_int("max_validation_images", Range::closed(0, 1000000), 0));

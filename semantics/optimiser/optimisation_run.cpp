@@ -35,7 +35,7 @@ nlohmann::json settings_json(const OptimiseOptions& o) {
   const GaOptions& g = o.ga;
   nlohmann::json seeds = nlohmann::json::array();
   for (const Genome& s : o.seeds) seeds.push_back(s.to_string());
-  return {{"dataset", fs::absolute(o.dataset).lexically_normal().string()},
+  nlohmann::json settings = {{"dataset", fs::absolute(o.dataset).lexically_normal().string()},
           {"seed", o.seed},
           {"population", g.population},
           {"generations", g.generations},
@@ -66,6 +66,10 @@ nlohmann::json settings_json(const OptimiseOptions& o) {
             {"target_time_ratio", g.weights.target_time_ratio},
             {"size", g.weights.size}}},
           {"seeds", seeds}};
+  // Only when set, so that the checkpoints of runs before the key existed still resume.
+  if (g.folds > 1) settings["folds"] = g.folds;
+  if (g.weights.invariance > 0) settings["invariance_images"] = g.invariance_images;
+  return settings;
 }
 
 fs::path checkpoint_path(const fs::path& out, int generation) {
@@ -124,6 +128,8 @@ void save_fitness_plot(const fs::path& path, const std::vector<GenerationSummary
     mean.push_back(s.mean);
     worst.push_back(s.worst);
   }
+  // Generations count from 0: no axis room before the first.
+  p.set_x_range(0.0, std::max(1.0, x.empty() ? 1.0 : x.back()));
   plot::SeriesStyle style;
   style.markers = true;
   p.add_series("best", x, best, style);
@@ -228,6 +234,7 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
       result.describe_seconds += evaluations[i].describe_seconds;
       result.train_seconds += evaluations[i].train_seconds;
       result.validate_seconds += evaluations[i].validate_seconds;
+      result.invariance_seconds += evaluations[i].invariance_seconds;
     }
     std::vector<double> objectives;
     for (const Genome& g : ga.population()) objectives.push_back(cache.at(g.to_string()).objective);

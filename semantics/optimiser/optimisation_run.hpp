@@ -56,7 +56,7 @@ struct OptimiseResult {
   bool interrupted = false;
   // Summed over this process's evaluations (threads overlap: the sums can
   // exceed evaluation_seconds): where an evaluation's time goes.
-  double describe_seconds = 0, train_seconds = 0, validate_seconds = 0;
+  double describe_seconds = 0, train_seconds = 0, validate_seconds = 0, invariance_seconds = 0;
 };
 
 // Validates the options and the run folder before any work (a dataset

@@ -1,0 +1,100 @@
+// The optimiser's validation split: one held-out share, or k cross-validation
+// folds in which every training image is validated exactly once.
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/util/error.hpp"
+#include "semantics/optimiser/fitness.hpp"
+#include "tests/semantics/synthetic_facades.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace facadeslam::semantics {
+namespace {
+
+class FitnessSplitTest : public ::testing::Test {
+ protected:
+  void SetUp() override { test_util::write_synthetic_dataset(dir_.path(), 10, 1, {40, 30}); }
+  test::TempDir dir_;
+};
+
+TEST_F(FitnessSplitTest, OneShareHeldOut) {
+  GaOptions options;
+  options.validation_share = 0.3;
+  const FitnessSplit split = split_train_list(dir_.path(), options, 7);
+  ASSERT_EQ(split.folds.size(), 1u);
+  EXPECT_EQ(split.folds[0].validation.size(), 3u);
+  EXPECT_EQ(split.folds[0].train.size(), 7u);
+  const nlohmann::json json = to_json(split);
+  EXPECT_EQ(json.at("validation").size(), 3u);  // the layout runs have always written
+}
+
+TEST_F(FitnessSplitTest, FoldsValidateEveryImageOnceAndTrainOnTheRest) {
+  GaOptions options;
+  options.folds = 3;
+  const FitnessSplit split = split_train_list(dir_.path(), options, 7);
+  ASSERT_EQ(split.folds.size(), 3u);
+  std::map<std::string, int> validated;
+  for (const FitnessFold& fold : split.folds) {
+    EXPECT_EQ(fold.train.size() + fold.validation.size(), 10u);
+    for (const LabelledImage& image : fold.validation) {
+      ++validated[image.name];
+      EXPECT_TRUE(std::none_of(fold.train.begin(), fold.train.end(),
+                               [&](const LabelledImage& t) { return t.name == image.name; }))
+          << image.name << " is in its own fold's training part";
+    }
+  }
+  EXPECT_EQ(validated.size(), 10u);
+  for (const auto& [name, count] : validated) EXPECT_EQ(count, 1) << name;
+  // The seed fixes the split; another seed gives another one.
+  EXPECT_EQ(to_json(split_train_list(dir_.path(), options, 7)), to_json(split));
+  EXPECT_NE(to_json(split_train_list(dir_.path(), options, 8)), to_json(split));
+  EXPECT_EQ(to_json(split).at("folds").size(), 3u);
+}
+
+TEST_F(FitnessSplitTest, MoreFoldsThanImagesIsAnError) {
+  GaOptions options;
+  options.folds = 11;
+  EXPECT_THROW(split_train_list(dir_.path(), options, 7), Error);
+}
+
+}  // namespace
+}  // namespace facadeslam::semantics
+
+namespace facadeslam::semantics {
+namespace {
+
+// The invariance term: measured (a match rate in [0, 1]) only when weighted,
+// deterministic, and added to the objective with its weight.
+TEST(FitnessInvariance, MeasuredOnlyWhenWeightedAndAddedToTheObjective) {
+  test::TempDir dir;
+  test_util::write_synthetic_dataset(dir.path(), 6, 1);
+  GaOptions options;
+  options.validation_share = 0.34;
+  options.max_samples = 500;
+  options.max_trees = 4;
+  options.max_depth = 4;
+  options.weights.time = 0.0;  // measured timings differ run to run
+  options.weights.invariance = 0.0;
+  const FitnessEvaluator without(split_train_list(dir.path(), options, 3), options, 3);
+  const GenomeEvaluation plain = without.evaluate(Genome::thesis_best());
+  EXPECT_EQ(plain.invariance, 0.0);
+
+  options.weights.invariance = 0.5;
+  const FitnessEvaluator with(split_train_list(dir.path(), options, 3), options, 3);
+  const GenomeEvaluation a = with.evaluate(Genome::thesis_best());
+  EXPECT_GT(a.invariance, 0.0);
+  EXPECT_LE(a.invariance, 1.0);
+  EXPECT_EQ(a.invariance, with.evaluate(Genome::thesis_best()).invariance);
+  EXPECT_EQ(a.overall, plain.overall);  // the rest of the evaluation is unchanged
+  EXPECT_NEAR(a.objective - plain.objective, 0.5 * a.invariance, 1e-12);
+  // Checkpoints keep it.
+  EXPECT_EQ(evaluation_from_json(to_json(a)).invariance, a.invariance);
+}
+
+}  // namespace
+}  // namespace facadeslam::semantics
