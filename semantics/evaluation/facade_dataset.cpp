@@ -88,4 +88,20 @@ LoadedLabelledImage load_labelled_image(const LabelledImage& entry) {
   return loaded;
 }
 
+DecodedImageCache::DecodedImageCache(const std::vector<LabelledImage>& images, std::size_t budget_bytes) {
+  for (const LabelledImage& entry : images) {
+    if (decoded_.count(entry.image)) continue;
+    LoadedLabelledImage loaded = load_labelled_image(entry);
+    const std::size_t size = loaded.bgr.total() * loaded.bgr.elemSize() + loaded.label.total() * loaded.label.elemSize();
+    if (bytes_ + size > budget_bytes) break;
+    bytes_ += size;
+    decoded_.emplace(entry.image, std::move(loaded));
+  }
+}
+
+LoadedLabelledImage DecodedImageCache::operator()(const LabelledImage& entry) const {
+  const auto it = decoded_.find(entry.image);
+  return it != decoded_.end() ? it->second : load_labelled_image(entry);
+}
+
 }  // namespace facadeslam::semantics

@@ -6,7 +6,10 @@
 //   DIR/labels/NAME.png           the colour label image, same size
 // Opening checks that every listed file exists, so a long evaluation fails
 // at once rather than after hours.
+#include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,5 +34,27 @@ struct LoadedLabelledImage {
   cv::Mat bgr, label;
 };
 LoadedLabelledImage load_labelled_image(const LabelledImage& entry);
+
+// Where the evaluations get an entry's pixels: load_labelled_image, or a
+// DecodedImageCache that decoded them once.
+using LabelledImageLoader = std::function<LoadedLabelledImage(const LabelledImage&)>;
+
+// Photos and label images decoded once, up to a memory budget (~2 MB per
+// LabelMeFacade image): the optimiser reads the same training images for every
+// genome, and decoding them was a fifth of an evaluation. Entries beyond the
+// budget, or not given at construction, are read from disk when asked for.
+// Read-only after construction, so threads may share it (cv::Mat headers are
+// copied, not the pixels).
+class DecodedImageCache {
+ public:
+  DecodedImageCache(const std::vector<LabelledImage>& images, std::size_t budget_bytes);
+  LoadedLabelledImage operator()(const LabelledImage& entry) const;
+  std::size_t images() const { return decoded_.size(); }
+  std::size_t bytes() const { return bytes_; }
+
+ private:
+  std::map<std::filesystem::path, LoadedLabelledImage> decoded_;  // by photo path
+  std::size_t bytes_ = 0;
+};
 
 }  // namespace facadeslam::semantics

@@ -72,10 +72,11 @@ double LabelEvaluation::forest_ms_per_image() const {
 
 ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& images, int step,
                                           PointDescriptor& descriptor, const RandomForest& forest,
-                                          ConfusionMatrix& confusion, const AfterImage& after_image) {
+                                          ConfusionMatrix& confusion, const AfterImage& after_image,
+                                          const LabelledImageLoader& load) {
   ClassifiedImages out;
   for (std::size_t i = 0; i < images.size(); ++i) {
-    const LoadedLabelledImage loaded = load_labelled_image(images[i]);
+    const LoadedLabelledImage loaded = load(images[i]);
     const LabelledKeypoints kps = labelled_keypoints(loaded.label, step);
     out.unlabelled += kps.unlabelled;
     out.keypoints += kps.points.size();

@@ -95,7 +95,8 @@ using AfterImage = std::function<void(std::size_t index, const LoadedLabelledIma
                                       const LabelledKeypoints& keypoints, double extraction_seconds)>;
 ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& images, int step,
                                           PointDescriptor& descriptor, const RandomForest& forest,
-                                          ConfusionMatrix& confusion, const AfterImage& after_image = {});
+                                          ConfusionMatrix& confusion, const AfterImage& after_image = {},
+                                          const LabelledImageLoader& load = load_labelled_image);
 
 // Class names in id order (LabelMeFacade's nine).
 std::vector<std::string> evaluation_class_names();

@@ -12,7 +12,7 @@
 namespace facadeslam::semantics {
 
 TrainingSet build_training_set(const std::vector<LabelledImage>& images, const TrainingSetOptions& options,
-                               PointDescriptor& descriptor) {
+                               PointDescriptor& descriptor, const LabelledImageLoader& load) {
   constexpr int kClasses = static_cast<int>(kSemanticClasses.size());
   TrainingSet set;
   TrainingSetStats& stats = set.stats;
@@ -22,7 +22,7 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const T
   {
     Progress progress("reading training labels", images.size());
     for (std::size_t i = 0; i < images.size(); ++i) {
-      const LoadedLabelledImage loaded = load_labelled_image(images[i]);
+      const LoadedLabelledImage loaded = load(images[i]);
       LabelledKeypoints kps = options.keypoints == KeypointSource::grid
                                   ? labelled_keypoints(loaded.label, options.step)
                                   : labelled_keypoints(loaded.label, corner_keypoints(loaded.bgr));
@@ -66,7 +66,7 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const T
       unique_index.push_back(static_cast<int>(unique.size()) - 1);
       ++end;
     }
-    const cv::Mat bgr = load_labelled_image(images[image]).bgr;
+    const cv::Mat bgr = load(images[image]).bgr;
     const Stopwatch described;
     const cv::Mat rows = descriptor.compute(bgr, unique);
     stats.extraction_seconds += described.elapsed_s();

@@ -39,7 +39,8 @@ struct TrainingSet {
 
 // Shows progress bars on a terminal. Throws Error when the images have no
 // labelled keypoint, or (naming the file) when an image cannot be read.
+// `load` gives an entry's pixels (a DecodedImageCache in the optimiser).
 TrainingSet build_training_set(const std::vector<LabelledImage>& images, const TrainingSetOptions& options,
-                               PointDescriptor& descriptor);
+                               PointDescriptor& descriptor, const LabelledImageLoader& load = load_labelled_image);
 
 }  // namespace facadeslam::semantics

@@ -142,8 +142,24 @@ double FitnessEvaluator::invariance_score(PointDescriptor& descriptor) const {
   return counted > 0 ? sum / counted : 0.0;
 }
 
+namespace {
+
+std::vector<LabelledImage> every_image(const FitnessSplit& split) {
+  std::vector<LabelledImage> all;
+  for (const FitnessFold& fold : split.folds) {
+    all.insert(all.end(), fold.train.begin(), fold.train.end());
+    all.insert(all.end(), fold.validation.begin(), fold.validation.end());
+  }
+  return all;
+}
+
+}  // namespace
+
 FitnessEvaluator::FitnessEvaluator(FitnessSplit split, GaOptions options, std::uint64_t seed)
-    : split_(std::move(split)), options_(std::move(options)), seed_(seed) {}
+    : split_(std::move(split)),
+      images_(std::make_shared<const DecodedImageCache>(every_image(split_), options.image_cache_mb << 20)),
+      options_(std::move(options)),
+      seed_(seed) {}
 
 GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
   const Stopwatch watch;
@@ -174,7 +190,8 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
   std::size_t timed = 0;
   for (const FitnessFold& fold : split_.folds) {
     Stopwatch phase;
-    const TrainingSet set = build_training_set(fold.train, set_options, *descriptor);
+    const LabelledImageLoader load = [this](const LabelledImage& entry) { return (*images_)(entry); };
+    const TrainingSet set = build_training_set(fold.train, set_options, *descriptor, load);
     e.describe_seconds += phase.elapsed_s();
     phase.restart();
     const RandomForest forest = RandomForest::train(set.samples, set.labels, params);
@@ -190,7 +207,8 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
                                const Stopwatch stage;
                                const cv::Mat sift_rows = sift->compute(loaded.bgr, kps.points);
                                sift_s += stage.elapsed_s();
-                             });
+                             },
+                             load);
     e.validate_seconds += phase.elapsed_s();
   }
   if (options_.weights.invariance > 0) {

@@ -14,6 +14,7 @@
 // evaluate() is const and thread-safe: workers call it in parallel.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,8 @@ class FitnessEvaluator {
   double invariance_score(PointDescriptor& descriptor) const;
 
   FitnessSplit split_;
+  // The split's images decoded once (read-only: shared by the worker threads).
+  std::shared_ptr<const DecodedImageCache> images_;
   GaOptions options_;
   std::uint64_t seed_;
 };

@@ -53,6 +53,8 @@ GaOptions load_ga_options(const std::filesystem::path& path) {
   o.plateau_tolerance = root.get_double("plateau_tolerance", Range::closed(0, 1), o.plateau_tolerance);
   o.validation_share = root.get_double("validation_share", Range::closed(0.01, 0.99), o.validation_share);
   o.folds = root.get_int("folds", Range::closed(1, 20), o.folds);
+  o.image_cache_mb = static_cast<std::size_t>(
+      root.get_int("image_cache_mb", Range::closed(0, 1000000), static_cast<int>(o.image_cache_mb)));
   o.invariance_images = static_cast<std::size_t>(
       root.get_int("invariance_images", Range::closed(1, 1000), static_cast<int>(o.invariance_images)));
   o.max_train_images = static_cast<std::size_t>(root.get_int("max_train_images", Range::closed(0, 1000000), 0));

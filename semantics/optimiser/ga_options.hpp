@@ -68,6 +68,9 @@ struct GaOptions {
   int folds = 1;
   // Validation images the invariance term is measured on (when its weight is > 0).
   std::size_t invariance_images = 2;
+  // Memory for the split's images decoded once and shared by every
+  // evaluation (facade_dataset.hpp, DecodedImageCache), MB; 0: decode per use.
+  std::size_t image_cache_mb = 2048;
   // Images and keypoints per fitness evaluation (0: all).
   std::size_t max_train_images = 0, max_validation_images = 0, max_samples = 0;
   int step = 9;  // grid step of the keypoints
