@@ -1,5 +1,6 @@
-// The optimiser's validation split: one held-out share, or k cross-validation
-// folds in which every training image is validated exactly once.
+// The optimiser's fitness: its validation split (one held-out share, or k
+// cross-validation folds in which every training image is validated exactly
+// once), the invariance term, and the images decoded once for all evaluations.
 #include <algorithm>
 #include <map>
 #include <string>
@@ -94,6 +95,32 @@ TEST(FitnessInvariance, MeasuredOnlyWhenWeightedAndAddedToTheObjective) {
   EXPECT_NEAR(a.objective - plain.objective, 0.5 * a.invariance, 1e-12);
   // Checkpoints keep it.
   EXPECT_EQ(evaluation_from_json(to_json(a)).invariance, a.invariance);
+}
+
+}  // namespace
+}  // namespace facadeslam::semantics
+
+namespace facadeslam::semantics {
+namespace {
+
+TEST(DecodedImageCache, DecodesOnceWithinItsBudgetAndReadsTheRestFromDisk) {
+  test::TempDir dir;
+  test_util::write_synthetic_dataset(dir.path(), 3, 0, {40, 30});
+  const std::vector<LabelledImage> images = read_facade_split(dir.path(), "train.txt");
+  const std::size_t one_image = 2 * 40 * 30 * 3;  // photo and label image, 8-bit BGR
+  const DecodedImageCache all(images, 10 * one_image), two(images, 2 * one_image), none(images, 0);
+  EXPECT_EQ(all.images(), 3u);
+  EXPECT_EQ(all.bytes(), 3 * one_image);
+  EXPECT_EQ(two.images(), 2u);
+  EXPECT_EQ(none.images(), 0u);
+  for (const LabelledImage& entry : images) {
+    const LoadedLabelledImage disk = load_labelled_image(entry);
+    for (const DecodedImageCache* cache : {&all, &two, &none}) {
+      const LoadedLabelledImage got = (*cache)(entry);
+      EXPECT_EQ(cv::norm(got.bgr, disk.bgr, cv::NORM_INF), 0.0) << entry.name;
+      EXPECT_EQ(cv::norm(got.label, disk.label, cv::NORM_INF), 0.0) << entry.name;
+    }
+  }
 }
 
 }  // namespace
