@@ -58,6 +58,16 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
     for (const SemanticClass& c : kSemanticClasses)
       if (const auto share = a.class_accuracy(c.id)) per_class[std::string(c.name)] = *share;
     out["label_accuracy_per_class"] = per_class;
+    // Rows: true class, columns: label given (class names), points.
+    Json confusion = Json::object();
+    for (const SemanticClass& t : kSemanticClasses) {
+      if (a.per_class_points[t.id] == 0) continue;
+      Json row = Json::object();
+      for (const SemanticClass& l : kSemanticClasses)
+        if (a.confusion[t.id][l.id] > 0) row[std::string(l.name)] = a.confusion[t.id][l.id];
+      confusion[std::string(t.name)] = row;
+    }
+    out["label_confusion"] = confusion;
   }
   out["worker_ms_per_keyframe"] = timing_summary(stats->keyframe_ms);
   double total_ms = 0.0;

@@ -18,6 +18,14 @@ std::optional<double> MapLabelAccuracy::class_accuracy(std::size_t c) const {
   return static_cast<double>(per_class_correct[c]) / static_cast<double>(per_class_points[c]);
 }
 
+std::optional<std::pair<std::size_t, std::size_t>> MapLabelAccuracy::commonest_mistake(std::size_t c) const {
+  if (c >= confusion.size()) return std::nullopt;
+  std::optional<std::pair<std::size_t, std::size_t>> worst;
+  for (std::size_t l = 0; l < confusion[c].size(); ++l)
+    if (l != c && confusion[c][l] > 0 && (!worst || confusion[c][l] > worst->second)) worst = {{l, confusion[c][l]}};
+  return worst;
+}
+
 MapLabelAccuracy map_label_accuracy(const Map& map, const GroundTruthLabels& truth) {
   std::map<KeyFrame::Id, cv::Mat> truth_of_keyframe;
   for (const KeyFrameSnapshot& kf : map.snapshot_keyframes()) {
@@ -51,6 +59,7 @@ MapLabelAccuracy map_label_accuracy(const Map& map, const GroundTruthLabels& tru
     }
     ++out.evaluated;
     ++out.per_class_points[true_class];
+    if (label.label < out.confusion.size()) ++out.confusion[true_class][label.label];
     if (label.label == true_class) {
       ++out.correct;
       ++out.per_class_correct[true_class];

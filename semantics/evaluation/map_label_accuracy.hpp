@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <utility>
 
 #include <opencv2/core.hpp>
 
@@ -25,11 +26,16 @@ struct MapLabelAccuracy {
   std::size_t without_truth = 0;  // labelled, but no ground truth at the point
   std::size_t unlabelled = 0;     // not labelled (yet): not counted above
   std::array<std::size_t, kSemanticClasses.size()> per_class_points{}, per_class_correct{};  // by true class
+  // confusion[true class][label]: where each class's points went.
+  std::array<std::array<std::size_t, kSemanticClasses.size()>, kSemanticClasses.size()> confusion{};
 
   // correct / evaluated; nullopt when nothing was evaluated.
   std::optional<double> accuracy() const;
   // Of the points whose true class is `c`, the share labelled `c`.
   std::optional<double> class_accuracy(std::size_t c) const;
+  // The label most often given to points of true class `c` other than `c`
+  // itself, and how many got it; nullopt when none was mislabelled.
+  std::optional<std::pair<std::size_t, std::size_t>> commonest_mistake(std::size_t c) const;
 };
 
 // Throws Error when a ground-truth image is not the size of the keyframe it

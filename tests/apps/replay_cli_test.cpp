@@ -290,6 +290,16 @@ TEST_F(ReplayCli, GroundTruthLabelsGiveTheLabelAccuracyAndBadOnesFailFirst) {
   EXPECT_LE(accuracy, 1.0) << report;
   EXPECT_THAT(report, HasSubstr("\"label_accuracy_per_class\""));
   EXPECT_THAT(report, HasSubstr("\"points_down_weighted_by_tracker\""));
+  // The confusion matrix holds every evaluated point; its diagonal is the accuracy.
+  const nlohmann::json semantics = nlohmann::json::parse(report).at("semantics");
+  double all = 0, diagonal = 0;
+  for (const auto& row : semantics.at("label_confusion").items())
+    for (const auto& cell : row.value().items()) {
+      all += cell.value().get<double>();
+      if (cell.key() == row.key()) diagonal += cell.value().get<double>();
+    }
+  EXPECT_EQ(all, semantics.at("label_accuracy_points").get<double>());
+  EXPECT_NEAR(diagonal / all, accuracy, 1e-12);
 
   std::string absent = "-q replay ";
   absent.append(quoted(sequence)).append(" --sync --gt-labels ").append(quoted(dir_ / "nowhere"));

@@ -50,6 +50,12 @@ SemanticRun run_scene(const std::string& name, bool semantics_on) {
       if (const auto share = run.labels.class_accuracy(c.id))
         std::printf(" %s %.2f (%zu)", std::string(c.name).c_str(), *share, run.labels.per_class_points[c.id]);
     std::printf("; %zu measurements left out or down-weighted for their class\n", run.dropped);
+    std::printf("[  FIGURES ] %s labels, commonest mistake per true class:", name.c_str());
+    for (const SemanticClass& c : kSemanticClasses)
+      if (const auto mistake = run.labels.commonest_mistake(c.id))
+        std::printf(" %s -> %s (%zu)", std::string(c.name).c_str(), std::string(kSemanticClasses[mistake->first].name).c_str(),
+                    mistake->second);
+    std::printf("\n");
   }
   std::fflush(stdout);
   return run;
