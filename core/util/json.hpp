@@ -15,8 +15,11 @@ using Json = nlohmann::ordered_json;
 // are written as null (JSON has no NaN), invalid UTF-8 in strings (a file name
 // from a Latin-1 system) as U+FFFD: the output always parses.
 std::string json_text(const Json& json);
+// The same for nlohmann's sorted-key type (the optimiser's checkpoints).
+std::string json_text(const nlohmann::json& json);
 
 // Writes json_text(json) atomically to `path` (see atomic_write.hpp).
 void write_json(const std::filesystem::path& path, const Json& json);
+void write_json(const std::filesystem::path& path, const nlohmann::json& json);
 
 }  // namespace facadeslam

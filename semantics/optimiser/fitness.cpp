@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include <nlohmann/json.hpp>
@@ -188,9 +189,9 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
   ConfusionMatrix confusion(static_cast<int>(kSemanticClasses.size()));
   double descriptor_s = 0.0, sift_s = 0.0;
   std::size_t timed = 0;
+  const LabelledImageLoader load = std::cref(*images_);
   for (const FitnessFold& fold : split_.folds) {
     Stopwatch phase;
-    const LabelledImageLoader load = [this](const LabelledImage& entry) { return (*images_)(entry); };
     const TrainingSet set = build_training_set(fold.train, set_options, *descriptor, load);
     e.describe_seconds += phase.elapsed_s();
     phase.restart();

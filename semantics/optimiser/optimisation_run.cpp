@@ -15,6 +15,7 @@
 
 #include "core/plot/line_plot.hpp"
 #include "core/util/atomic_write.hpp"
+#include "core/util/json.hpp"
 #include "core/util/error.hpp"
 #include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
@@ -114,7 +115,6 @@ nlohmann::json read_json_file(const fs::path& path) {
   }
 }
 
-void write_json(const fs::path& path, const nlohmann::json& j) { write_text_atomically(path, j.dump(2) + "\n"); }
 
 void save_fitness_plot(const fs::path& path, const std::vector<GenerationSummary>& history) {
   plot::LinePlot p(1000, 700);
