@@ -172,6 +172,9 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
                   "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the 211-character "
                   "0/1 string (default: the thesis' best genome)");
   cmd->add_option("--step", e.step, "Grid step in pixels")->check(CLI::Range(1, 10000))->capture_default_str();
+  cmd->add_flag("--grey", e.grey,
+                "Train and test on the photos turned grey (three equal channels, as a grey camera's frames reach "
+                "the semantic worker): the figures of a grey model");
   auto* balance_option = cmd->add_flag("--balance", e.balance,
                 "Class-balanced training sample: every class sampled to the median class size (rare classes "
                 "oversampled, common ones subsampled)");

@@ -43,6 +43,7 @@ const fs::path kDefaultOutput = "facadeslam-out";
 // The shipped forest (models/README.md) and the semantic settings, relative
 // to the project root.
 const fs::path kDefaultModel = "models/default.fsmodel";
+const fs::path kDefaultGreyModel = "models/grey.fsmodel";
 const fs::path kDefaultSemanticsConfig = "configs/semantics.yaml";
 // What a replay writes into --out (an older run's folder without report.json
 // still counts as one: require_replaceable_folder).
@@ -56,7 +57,7 @@ struct ReplayOptions {
   std::size_t start = 0, stride = 1, limit = 0, loop = 1;
   std::string on_corrupt = "skip";
   std::string semantics;  // on, off, or empty: as the semantics config says
-  fs::path model, semantics_config;
+  fs::path model, grey_model, semantics_config;
   fs::path render;  // empty: no augmented view
   std::size_t render_every = 1;
 };
@@ -68,13 +69,19 @@ SemanticsOptions semantics_options(const ReplayOptions& o) {
   SemanticsOptions semantics;
   semantics.enabled = true;
   semantics.model = kDefaultModel;
+  semantics.grey_model = kDefaultGreyModel;
   if (!o.semantics_config.empty())
     semantics = load_semantics_options(o.semantics_config, semantics);
   else if (fs::exists(kDefaultSemanticsConfig))
     semantics = load_semantics_options(kDefaultSemanticsConfig, semantics);
   if (!o.semantics.empty()) semantics.enabled = o.semantics == "on";
   if (!o.model.empty()) semantics.model = o.model;
+  if (!o.grey_model.empty()) semantics.grey_model = o.grey_model;
   if (!semantics.enabled) return semantics;
+  // Run from elsewhere, the shipped grey model is not found: grey sequences
+  // then stay unlabelled (said at the end of the run), colour ones are as usual.
+  if (o.grey_model.empty() && semantics.grey_model == kDefaultGreyModel && !fs::exists(semantics.grey_model))
+    semantics.grey_model.clear();
   if (o.model.empty() && semantics.model == kDefaultModel && !fs::exists(semantics.model)) {
     spdlog::warn("no model at {} (run from the project folder, or pass --model): semantics off", kDefaultModel.string());
     semantics.enabled = false;
@@ -189,7 +196,8 @@ int run_replay(ReplayOptions o) {
   system.finish();
 
   const double replay_fps = static_cast<double>(log.frames) / std::max(1e-9, replay_time.elapsed_s());
-  ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(), {}, {}};
+  ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(),
+                     slam.semantics.enabled ? slam.semantics.grey_model : fs::path(), {}, {}};
   info.interrupted = interrupted;
   if (ar_render) info.render = ar_render->finish(replay_fps);
   if (gt_labels && slam.semantics.enabled)
@@ -222,10 +230,10 @@ int run_replay(ReplayOptions o) {
   if (info.label_accuracy && info.label_accuracy->accuracy())
     std::printf("replay: label accuracy %.3f over %zu labelled points\n", *info.label_accuracy->accuracy(),
                 info.label_accuracy->evaluated);
-  if (const auto stats = system.semantic_stats(); stats && stats->grey_keyframes > 0)
+  if (const auto stats = system.semantic_stats(); stats && stats->grey_keyframes > 0 && !stats->grey_model)
     std::fprintf(stderr,
-                 "facadeslam: the images are grey (%zu of %zu labelling jobs): the semantic model needs colour, "
-                 "their points stay unlabelled (--semantics off silences this)\n",
+                 "facadeslam: the images are grey (%zu of %zu labelling jobs) and no grey model was given "
+                 "(--grey-model): their points stay unlabelled (--semantics off silences this)\n",
                  stats->grey_keyframes, stats->keyframes);
   if (interrupted) return kExitInterrupted;
   if (!system.initialised()) {
@@ -270,6 +278,8 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--semantics-config", options->semantics_config,
                   "Semantic settings YAML: model, class prior, unreliable classes (default: configs/semantics.yaml)");
   cmd->add_option("--model", options->model, "Forest model for the semantic worker (default: models/default.fsmodel)");
+  cmd->add_option("--grey-model", options->grey_model,
+                  "Forest model for grey images (a grey camera; `train --grey`; default: models/grey.fsmodel)");
   auto* render_option = cmd->add_option("--render", options->render,
                                  "Render the augmented view (AR overlay + map view) of the tracked frames into this "
                                  "folder: PNG frames, augmented.mp4, contact_sheet.png");

@@ -82,6 +82,13 @@ void add_train_command(CLI::App& app) {
                   "and half resolution: where the map's points are)")
       ->check(CLI::IsMember({"grid", "corners"}))
       ->capture_default_str();
+  cmd->add_option("--scales", t.scales,
+                  "Scales each training photo is also seen at (comma-separated, e.g. 0.5,1,2): the sample is drawn "
+                  "from all of them")
+      ->delimiter(',')
+      ->check(CLI::Range(0.05, 8.0))
+      ->capture_default_str();
+  cmd->add_flag("--grey", t.grey, "Train on the photos turned grey: a model for grey cameras (KITTI's snippet)");
   cmd->add_option("--seed", t.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
   cmd->add_option("--trees", t.trees, "Number of trees (default: the genome's)")->check(CLI::Range(1, 10000));
   cmd->add_option("--depth", t.max_depth, "Maximum tree depth (default: the genome's)")->check(CLI::Range(1, 1000));

@@ -107,6 +107,7 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   const ConfigNode root = ConfigNode::load_file(path);
   options.enabled = root.get_bool("enabled", options.enabled);
   if (root.has("model")) options.model = root.get_string("model");
+  if (root.has("grey_model")) options.grey_model = root.get_string("grey_model");
   if (const auto prior = root.optional_child("class_prior")) {
     for (const SemanticClass& c : kSemanticClasses)
       options.class_prior[c.id] = static_cast<float>(prior->get_double(std::string(c.name), Range::positive()));
@@ -122,6 +123,8 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   options.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), options.unreliable_weight);
   options.min_reliable_points =
       root.get_int("min_reliable_points", Range::closed(0, 100000), options.min_reliable_points);
+  options.unreliable_verify_px =
+      root.get_double("unreliable_verify_px", Range::closed(0, 100), options.unreliable_verify_px);
   root.finish();
   return options;
 }

@@ -17,6 +17,9 @@ namespace facadeslam {
 struct SemanticsOptions {
   bool enabled = false;
   std::filesystem::path model;  // a .fsmodel (or OpenCV YAML) forest model
+  // A model trained on grey photos for grey keyframes (empty: their points
+  // stay unlabelled). Same class table and class prior as `model`.
+  std::filesystem::path grey_model;
   // How common each class is (any scale): LabelMeFacade train.txt's grid
   // keypoints per class, what the shipped model was trained on.
   ClassVotes class_prior{16751, 176887, 15726, 2864, 20267, 56697, 48167, 32446, 13215};
@@ -36,6 +39,12 @@ struct SemanticsOptions {
   double unreliable_weight = 0.1;
   // ... unless fewer than this many other points are in view.
   int min_reliable_points = 100;
+  // A down-weighted point the pose reprojects within this many pixels (of
+  // its search level) is verified static and keeps its full weight
+  // (TrackerOptions::unreliable_verify_px; 0: never). On KITTI's snippet,
+  // down-weighting its parked cars and roadside trees in the coarse stage
+  // lost 7-8 frames with some grey models and weights; with 2 px, none.
+  double unreliable_verify_px = 2.0;
 
   // prior^weight per class, scaled so the largest is 1.
   ClassVotes class_weights() const;

@@ -25,10 +25,15 @@ namespace {
 // frame: a missing or foreign model fails the run before it starts.
 std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& options, KeyFramePointsQueue& queue) {
   if (!options.enabled) return nullptr;
-  semantics::ForestModel model = semantics::load_forest_model(options.model);
-  if (model.classes != semantics::labelmefacade_class_table())
-    fail_file(options.model, "a model for LabelMeFacade's nine classes (the map's class table)");
-  return std::make_unique<semantics::SemanticWorker>(std::move(model), queue, options.class_weights());
+  const auto load = [](const std::filesystem::path& path) {
+    semantics::ForestModel model = semantics::load_forest_model(path);
+    if (model.classes != semantics::labelmefacade_class_table())
+      fail_file(path, "a model for LabelMeFacade's nine classes (the map's class table)");
+    return model;
+  };
+  auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model), queue, options.class_weights());
+  if (!options.grey_model.empty()) worker->use_grey_model(load(options.grey_model));
+  return worker;
 }
 
 // With labels coming, the tracker weighs points of unreliable classes down
@@ -39,6 +44,7 @@ SlamOptions with_label_aware_tracking(SlamOptions options) {
     options.tracker.unreliable_min_confidence = static_cast<float>(options.semantics.min_confidence);
     options.tracker.min_reliable_points = options.semantics.min_reliable_points;
     options.tracker.unreliable_weight = options.semantics.unreliable_weight;
+    options.tracker.unreliable_verify_px = options.semantics.unreliable_verify_px;
   }
   return options;
 }

@@ -52,6 +52,7 @@ struct TrackingResult {
   int fine_searched = 0, fine_found = 0;
   int points_dropped = 0;        // projecting into the image, but of an unreliable class: not searched
   int points_down_weighted = 0;  // found, of an unreliable class: a lower weight in the pose update
+  int points_verified = 0;       // ... of which the pose put within unreliable_verify_px: full weight after all
   double inlier_rms_px = 0;
   SearchCounts fine_counts;
   StageTimings timings;
@@ -85,6 +86,12 @@ class Tracker {
   std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w,
                                      int* dropped = nullptr) const;
   bool unreliable(const MapPoint& point) const;
+  // Gives the down-weighted measurements that `update`'s pose reprojects
+  // within TrackerOptions::unreliable_verify_px their full weight and updates
+  // the pose again from there; returns how many. `few_reliable`: only when
+  // fewer than min_reliable_points full-weight measurements are inliers.
+  enum class VerifyWhen { always, few_reliable };
+  int verify_unreliable(PoseUpdateResult& update, std::vector<PoseMeasurement>& measurements, VerifyWhen when) const;
   // The found points as pose-update measurements (snapshot geometry),
   // unreliable ones with their lower weight (counted in `down_weighted`).
   std::vector<PoseMeasurement> pose_measurements(const std::vector<PointSnapshot>& points,

@@ -107,6 +107,12 @@ struct TrackerOptions {
   double unreliable_weight = 0.0;
   // ... unless fewer than this many other points project into the image.
   int min_reliable_points = 100;
+  // A down-weighted point that the pose reprojects within this many pixels
+  // (of the level it was found at) is verified static and gets its full
+  // weight in a second pose update (Tracker::verify_unreliable): always in
+  // the coarse stage, in the fine stage when fewer than min_reliable_points
+  // other points are inliers; 0: never.
+  double unreliable_verify_px = 0.0;
 
   std::uint64_t seed = 1;  // point-sampling order; fixed for reproducible runs
 };

@@ -29,6 +29,7 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
   relocalisations += r.status == FrameStatus::relocalised;
   points_dropped += static_cast<std::size_t>(r.tracking.points_dropped);
   points_down_weighted += static_cast<std::size_t>(r.tracking.points_down_weighted);
+  points_verified += static_cast<std::size_t>(r.tracking.points_verified);
   pyramid_ms.push_back(r.pyramid_ms);
   total_ms.push_back(r.total_ms);
   if (r.status == FrameStatus::tracking || r.status == FrameStatus::relocalised) {

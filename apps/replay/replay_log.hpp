@@ -24,7 +24,7 @@ struct ReplayLog {
 
   std::size_t frames = 0, tracked = 0, lost = 0, relocalisations = 0;
   // Of unreliable classes, summed over the frames: not searched / down-weighted.
-  std::size_t points_dropped = 0, points_down_weighted = 0;
+  std::size_t points_dropped = 0, points_down_weighted = 0, points_verified = 0;
   std::vector<double> pyramid_ms, coarse_ms, fine_ms, pose_ms, snapshot_ms, tracker_ms, total_ms;
 
   // `initialised`: whether the system had a map at this frame (a frame

@@ -30,6 +30,7 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
   out["enabled"] = stats.has_value();
   if (!stats) return out;
   out["model"] = info.model.string();
+  out["grey_model"] = stats->grey_model ? Json(info.grey_model.string()) : Json();
   std::size_t labelled = 0, unlabelled = 0;
   std::map<std::uint8_t, std::size_t> counts;
   for (const PointSnapshot& p : system.map().snapshot_points()) {
@@ -47,6 +48,8 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
   // lower weight, for their class; summed over the frames.
   out["points_dropped_by_tracker"] = log.points_dropped;
   out["points_down_weighted_by_tracker"] = log.points_down_weighted;
+  // ... of which the fine stage's pose verified as standing still: full weight after all.
+  out["points_verified_by_tracker"] = log.points_verified;
   Json classes = Json::object();
   for (const SemanticClass& c : kSemanticClasses) classes[std::string(c.name)] = counts[c.id];
   out["class_counts"] = classes;
@@ -75,7 +78,7 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
   // Per observation: the worker describes and classifies a point once per
   // keyframe that measures it.
   out["observations_labelled"] = stats->observations_labelled;
-  // Keyframes whose image was grey: the colour model does not label them.
+  // Keyframes whose image was grey: the grey model labels them, if given.
   out["grey_keyframes"] = stats->grey_keyframes;
   out["worker_us_per_point"] = stats->observations_labelled
                                    ? 1000.0 * total_ms / static_cast<double>(stats->observations_labelled)

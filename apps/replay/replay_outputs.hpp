@@ -27,6 +27,7 @@ struct ReplayRunInfo {
   std::filesystem::path sequence, camera_file;
   bool synchronous = false;
   std::filesystem::path model;  // empty: semantics off
+  std::filesystem::path grey_model;  // empty: none (grey keyframes stay unlabelled)
   // Against ground-truth label images, when the sequence has them.
   std::optional<semantics::MapLabelAccuracy> label_accuracy;
   // With --render: what was rendered (apps/replay/replay_render.hpp).

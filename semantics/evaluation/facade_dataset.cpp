@@ -1,9 +1,12 @@
 #include "semantics/evaluation/facade_dataset.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <system_error>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "core/util/error.hpp"
 #include "semantics/evaluation/label_image.hpp"
@@ -72,7 +75,29 @@ std::vector<LabelledImage> read_facade_split(const fs::path& root, const std::st
   return entries;
 }
 
-LoadedLabelledImage load_labelled_image(const LabelledImage& entry) {
+namespace {
+
+LoadedLabelledImage seen_as(LoadedLabelledImage stored, const LabelledImage& entry) {
+  LoadedLabelledImage seen = std::move(stored);
+  if (entry.scale != 1.0) {
+    const cv::Size size(std::max(1, static_cast<int>(std::lround(seen.bgr.cols * entry.scale))),
+                        std::max(1, static_cast<int>(std::lround(seen.bgr.rows * entry.scale))));
+    cv::Mat bgr, label;
+    cv::resize(seen.bgr, bgr, size, 0, 0, entry.scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
+    cv::resize(seen.label, label, size, 0, 0, cv::INTER_NEAREST);  // class colours must not blend
+    seen.bgr = bgr;
+    seen.label = label;
+  }
+  if (entry.grey) {
+    cv::Mat grey, bgr;
+    cv::cvtColor(seen.bgr, grey, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);
+    seen.bgr = bgr;
+  }
+  return seen;
+}
+
+LoadedLabelledImage load_stored(const LabelledImage& entry) {
   LoadedLabelledImage loaded;
   try {
     // Labels were drawn on the stored pixels: ignore any EXIF rotation.
@@ -88,10 +113,30 @@ LoadedLabelledImage load_labelled_image(const LabelledImage& entry) {
   return loaded;
 }
 
+}  // namespace
+
+LoadedLabelledImage load_labelled_image(const LabelledImage& entry) { return seen_as(load_stored(entry), entry); }
+
+std::vector<LabelledImage> with_views(const std::vector<LabelledImage>& images, const std::vector<double>& scales,
+                                      bool grey) {
+  if (scales.empty()) throw Error("training: expected at least one image scale");
+  std::vector<LabelledImage> views;
+  views.reserve(images.size() * scales.size());
+  for (const double scale : scales) {
+    if (!(scale > 0.0 && scale <= 8.0)) throw Error(cat("training: an image scale must be in (0, 8], got ", scale));
+    for (LabelledImage view : images) {
+      view.scale = scale;
+      view.grey = grey;
+      views.push_back(std::move(view));
+    }
+  }
+  return views;
+}
+
 DecodedImageCache::DecodedImageCache(const std::vector<LabelledImage>& images, std::size_t budget_bytes) {
   for (const LabelledImage& entry : images) {
     if (decoded_.count(entry.image)) continue;
-    LoadedLabelledImage loaded = load_labelled_image(entry);
+    LoadedLabelledImage loaded = load_stored(entry);
     const std::size_t size = loaded.bgr.total() * loaded.bgr.elemSize() + loaded.label.total() * loaded.label.elemSize();
     if (bytes_ + size > budget_bytes) break;
     bytes_ += size;
@@ -101,7 +146,9 @@ DecodedImageCache::DecodedImageCache(const std::vector<LabelledImage>& images, s
 
 LoadedLabelledImage DecodedImageCache::operator()(const LabelledImage& entry) const {
   const auto it = decoded_.find(entry.image);
-  return it != decoded_.end() ? it->second : load_labelled_image(entry);
+  if (it == decoded_.end()) return load_labelled_image(entry);
+  const bool as_stored = entry.scale == 1.0 && !entry.grey;
+  return as_stored ? it->second : seen_as(it->second, entry);
 }
 
 }  // namespace facadeslam::semantics

@@ -20,6 +20,11 @@ namespace facadeslam::semantics {
 struct LabelledImage {
   std::string name;
   std::filesystem::path image, label;
+  // How the photo is seen (training augmentation, `train --scales --grey`):
+  // resized by `scale` (labels by nearest neighbour) and, when `grey`, turned
+  // to grey in three channels, as a grey camera's frames reach the worker.
+  double scale = 1.0;
+  bool grey = false;
 };
 
 // One split list (`list` = "train.txt" or "test.txt") of the dataset at
@@ -28,18 +33,25 @@ struct LabelledImage {
 // reverse).
 std::vector<LabelledImage> read_facade_split(const std::filesystem::path& root, const std::string& list);
 
-// The photo (8-bit BGR) and its label image (8-bit BGR). Throws Error naming
-// the file when either cannot be read or their sizes differ.
+// The photo (8-bit BGR) and its label image (8-bit BGR), seen as the entry
+// says (scale, grey). Throws Error naming the file when either cannot be read
+// or their sizes differ.
 struct LoadedLabelledImage {
   cv::Mat bgr, label;
 };
 LoadedLabelledImage load_labelled_image(const LabelledImage& entry);
 
+// `images` once per scale (scale-major order), all grey when `grey`. Throws
+// Error for a scale outside (0, 8] or an empty list of scales.
+std::vector<LabelledImage> with_views(const std::vector<LabelledImage>& images, const std::vector<double>& scales,
+                                      bool grey);
+
 // Where the evaluations get an entry's pixels: load_labelled_image, or a
 // DecodedImageCache that decoded them once.
 using LabelledImageLoader = std::function<LoadedLabelledImage(const LabelledImage&)>;
 
-// Photos and label images decoded once, up to a memory budget (~2 MB per
+// Photos and label images decoded once (as stored: the entry's view is
+// applied on the way out), up to a memory budget (~2 MB per
 // LabelMeFacade image): the optimiser reads the same training images for every
 // genome, and decoding them was a fifth of an evaluation. Entries beyond the
 // budget, or not given at construction, are read from disk when asked for.

@@ -113,9 +113,11 @@ LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
   training.max_train_images = options.max_train_images;
   training.max_samples = options.max_samples;
   training.seed = options.seed;
+  training.grey = options.grey;
   // Everything that can be checked cheaply is checked before the long work:
   // the test list here, the rest by train_model().
-  const std::vector<LabelledImage> test = first(read_facade_split(options.dataset, "test.txt"), options.max_test_images);
+  const std::vector<LabelledImage> test =
+      with_views(first(read_facade_split(options.dataset, "test.txt"), options.max_test_images), {1.0}, options.grey);
   const TrainingRun run = train_model(training);
 
   if (!options.model_out.empty()) {
@@ -147,7 +149,8 @@ LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
 LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std::filesystem::path& model_file) {
   const Stopwatch start;
   if (options.step < 1) throw Error(cat("evaluate labels: the grid step must be at least 1, got ", options.step));
-  const std::vector<LabelledImage> test = first(read_facade_split(options.dataset, "test.txt"), options.max_test_images);
+  const std::vector<LabelledImage> test =
+      with_views(first(read_facade_split(options.dataset, "test.txt"), options.max_test_images), {1.0}, options.grey);
   const Stopwatch loading;
   const ForestModel model = load_forest_model(model_file);
   const double load_ms = 1e3 * loading.elapsed_s();
@@ -188,6 +191,7 @@ Json to_json(const LabelEvaluation& r, const LabelEvaluationOptions& o) {
   j["grid_step"] = o.step;
   j["grid_border"] = kDefaultGridBorder;
   j["balance"] = if_trained(o.balance);
+  j["grey"] = o.grey;
   j["max_samples"] = if_trained(static_cast<unsigned long long>(o.max_samples));
   j["seed"] = static_cast<unsigned long long>(r.forest.seed);
   Json forest = Json::object();

@@ -38,6 +38,7 @@ struct LabelEvaluationOptions {
   std::size_t max_samples = 0;          // training keypoints cap; 0 = all
   std::uint64_t seed = 1;               // training-sample draw and forest
   std::filesystem::path model_out;      // save the trained forest here when set
+  bool grey = false;                    // train and test on the photos turned grey (a grey camera's model)
 };
 
 struct LabelEvaluation {

@@ -43,6 +43,8 @@ TrainingRun train_model(const TrainingOptions& options) {
   const ForestParams params = training_forest_params(options);
   std::vector<LabelledImage> images = read_facade_split(options.dataset, "train.txt");
   if (options.max_train_images > 0 && images.size() > options.max_train_images) images.resize(options.max_train_images);
+  const std::size_t photos = images.size();
+  images = with_views(images, options.scales, options.grey);
   const std::unique_ptr<PointDescriptor> descriptor = make_point_descriptor(options.descriptor, options.genome);
 
   TrainingSetOptions set_options;
@@ -66,7 +68,7 @@ TrainingRun train_model(const TrainingOptions& options) {
   run.model.genome = options.genome;
   run.model.classes = labelmefacade_class_table();
   run.model.params = params;
-  run.train_images = images.size();
+  run.train_images = photos;
   run.set = std::move(set.stats);
   run.total_seconds = start.elapsed_s();
   return run;
@@ -93,6 +95,8 @@ Json training_summary_json(const TrainingRun& run, const TrainingOptions& option
   j["forest"] = std::move(forest);
   j["grid_step"] = options.step;
   j["keypoints"] = keypoint_source_name(options.keypoints);
+  j["scales"] = options.scales;
+  j["grey"] = options.grey;
   j["balance"] = options.balance;
   j["max_samples"] = static_cast<unsigned long long>(options.max_samples);
   j["train_images"] = static_cast<unsigned long long>(run.train_images);

@@ -27,6 +27,11 @@ struct TrainingOptions {
   std::size_t max_train_images = 0;  // first N of train.txt; 0 = all
   std::size_t max_samples = 0;       // training keypoints cap; 0 = all
   std::uint64_t seed = 1;            // training-sample draw and forest
+  // Views of each training photo (with_views): the sample is drawn from all
+  // of them. Scales other than 1 teach the forest the sizes a camera sees
+  // facades at; grey trains a model for grey cameras.
+  std::vector<double> scales{1.0};
+  bool grey = false;
   // Forest size overrides (0 = the genome's): the shipped model trades a
   // smaller forest for a file that fits in the repository.
   int trees = 0, max_depth = 0;

@@ -23,14 +23,22 @@ bool is_grey(const cv::Mat& bgr) {
   return true;
 }
 
+SemanticWorker::Classifier SemanticWorker::make_classifier(ForestModel model) {
+  Classifier c{std::move(model), nullptr};
+  c.descriptor = make_point_descriptor(c.model.descriptor, c.model.genome);
+  if (c.descriptor->width() != c.model.descriptor_width())
+    throw Error("semantic worker: the model's forest takes " + std::to_string(c.model.descriptor_width()) +
+                " values, its descriptor gives " + std::to_string(c.descriptor->width()));
+  return c;
+}
+
 SemanticWorker::SemanticWorker(ForestModel model, KeyFramePointsQueue& queue, const ClassVotes& class_weights)
-    : model_(std::move(model)),
-      class_weights_(class_weights),
-      descriptor_(make_point_descriptor(model_.descriptor, model_.genome)),
-      queue_(queue) {
-  if (descriptor_->width() != model_.descriptor_width())
-    throw Error("semantic worker: the model's forest takes " + std::to_string(model_.descriptor_width()) +
-                " values, its descriptor gives " + std::to_string(descriptor_->width()));
+    : colour_(make_classifier(std::move(model))), class_weights_(class_weights), queue_(queue) {}
+
+void SemanticWorker::use_grey_model(ForestModel model) {
+  grey_ = make_classifier(std::move(model));
+  std::lock_guard lock(stats_mutex_);
+  stats_.grey_model = true;
 }
 
 SemanticWorker::~SemanticWorker() { stop(); }
@@ -41,11 +49,13 @@ void SemanticWorker::label(const KeyFramePoints& job) {
   std::vector<cv::Point2f> keypoints;
   const cv::Mat& colour = job.keyframe->colour();
   // The colour image may be missing, or grey in three channels (a grey
-  // sequence such as KITTI's, decoded to BGR): the forest learnt its classes
-  // from colour photographs, and on grey it calls a third of a street sky.
-  // Nothing to describe: the points stay unlabelled, counted as grey.
+  // sequence such as KITTI's, decoded to BGR): the colour forest learnt its
+  // classes from colour photographs, and on grey it calls a third of a street
+  // sky. Grey keyframes go to the grey model; without one their points stay
+  // unlabelled, counted as grey.
   const bool grey = !colour.empty() && colour.type() == CV_8UC3 && is_grey(colour);
-  const bool describable = !colour.empty() && colour.type() == CV_8UC3 && !grey;
+  const Classifier* classifier = grey ? (grey_ ? &*grey_ : nullptr) : &colour_;
+  const bool describable = !colour.empty() && colour.type() == CV_8UC3 && classifier != nullptr;
   std::size_t skipped = 0;
   for (const auto& [point, px] : job.points) {
     // A point the map maker has dropped since the hand-off gets no votes.
@@ -58,10 +68,10 @@ void SemanticWorker::label(const KeyFramePoints& job) {
     points.push_back(point);
   }
   if (!points.empty()) {
-    const cv::Mat rows = descriptor_->compute(colour, keypoints);
+    const cv::Mat rows = classifier->descriptor->compute(colour, keypoints);
     cv::Mat shares;
-    model_.forest.predict(rows, shares);
-    const std::vector<int>& columns = model_.forest.classes();
+    classifier->model.forest.predict(rows, shares);
+    const std::vector<int>& columns = classifier->model.forest.classes();
     for (std::size_t i = 0; i < points.size(); ++i) {
       ClassVotes votes{};
       float total = 0.f;

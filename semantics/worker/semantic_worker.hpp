@@ -13,6 +13,7 @@
 // which makes runs bit-reproducible.
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -27,7 +28,8 @@ struct SemanticWorkerStats {
   std::size_t observations_labelled = 0;  // votes added (a point gets one per keyframe measuring it)
   std::size_t observations_skipped = 0;   // bad by the time they came, or no colour image
   std::vector<double> keyframe_ms;    // per job
-  std::size_t grey_keyframes = 0;     // jobs whose keyframe image was grey: not labelled
+  std::size_t grey_keyframes = 0;     // jobs whose keyframe image was grey
+  bool grey_model = false;            // ... labelled by the grey model (else left unlabelled)
 };
 
 // Whether a BGR image is grey (its three channels equal, sampled).
@@ -40,6 +42,11 @@ class SemanticWorker {
   // (SemanticsOptions::class_weights). All ones: the forest's votes.
   SemanticWorker(ForestModel model, KeyFramePointsQueue& queue, const ClassVotes& class_weights = all_ones());
   static ClassVotes all_ones();
+  // A model trained on grey photos (`train --grey`) for grey keyframes (a grey
+  // camera such as KITTI's): without one their points stay unlabelled, as the
+  // colour model, shown grey, calls a third of a street sky. Call before
+  // start(). Throws Error if its descriptor does not fit its forest.
+  void use_grey_model(ForestModel model);
   ~SemanticWorker();
   SemanticWorker(const SemanticWorker&) = delete;
   SemanticWorker& operator=(const SemanticWorker&) = delete;
@@ -59,9 +66,16 @@ class SemanticWorker {
  private:
   void run();
 
-  ForestModel model_;
+  // A forest and the descriptor it was trained on.
+  struct Classifier {
+    ForestModel model;
+    std::unique_ptr<PointDescriptor> descriptor;
+  };
+  static Classifier make_classifier(ForestModel model);
+
+  Classifier colour_;
+  std::optional<Classifier> grey_;
   ClassVotes class_weights_;
-  std::unique_ptr<PointDescriptor> descriptor_;
   KeyFramePointsQueue& queue_;
   std::thread thread_;
   mutable std::mutex stats_mutex_;

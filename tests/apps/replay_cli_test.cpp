@@ -272,6 +272,14 @@ TEST_F(ReplayCli, SemanticsLabelTheMapAndAMissingModelFailsFirst) {
   missing.append(" --out ").append(quoted(dir_ / "missing"));
   expect_one_line_error(run(missing), 1, "absent.fsmodel");
   EXPECT_FALSE(fs::exists(dir_ / "missing"));
+
+  // The grey model is loaded before any frame too, colour sequence or not.
+  EXPECT_THAT(report, HasSubstr("\"grey_model\""));
+  std::string missing_grey = "-q replay ";
+  missing_grey.append(quoted(sequence)).append(" --sync --grey-model ").append(quoted(dir_ / "absent-grey.fsmodel"));
+  missing_grey.append(" --out ").append(quoted(dir_ / "missing-grey"));
+  expect_one_line_error(run(missing_grey), 1, "absent-grey.fsmodel");
+  EXPECT_FALSE(fs::exists(dir_ / "missing-grey"));
 }
 
 // A synthetic sequence's label/ folder is found on its own and gives the

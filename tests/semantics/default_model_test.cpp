@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
 #include "core/util/stopwatch.hpp"
@@ -48,6 +50,25 @@ TEST(DefaultModel, IsTheShippedGenomesModularForestWithinFiveMegabytes) {
     cv::minMaxLoc(shares.row(r), nullptr, &best);
     EXPECT_GT(best, 0.0);
   }
+}
+
+// The shipped grey model (models/grey.fsmodel): the thesis genome's forest
+// trained on the training photos turned grey, for grey cameras; its summary
+// says so, and the pair fits the repository's limit together.
+TEST(DefaultModel, TheGreyModelIsTheThesisGenomeTrainedOnGreyPhotos) {
+  const auto path = test::source_dir() / "models/grey.fsmodel";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path;
+  EXPECT_LE(std::filesystem::file_size(path) + std::filesystem::file_size(test::source_dir() / "models/default.fsmodel"),
+            5u * 1000u * 1000u);
+  const Genome genome = Genome::thesis_best();
+  const std::unique_ptr<PointDescriptor> descriptor = make_point_descriptor("modular", genome);
+  const ForestModel model =
+      load_forest_model(path, {"modular", descriptor->width(), genome, labelmefacade_class_table()});
+  EXPECT_EQ(model.forest.classes().size(), labelmefacade_class_table().size());
+  std::ifstream summary_file(test::source_dir() / "models/grey.fsmodel.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_file);
+  EXPECT_EQ(summary.at("grey"), true);
+  EXPECT_EQ(summary.at("split"), "train.txt");
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // once), the invariance term, and the images decoded once for all evaluations.
 #include <algorithm>
 #include <map>
+#include <set>
+#include <tuple>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -121,6 +123,46 @@ TEST(DecodedImageCache, DecodesOnceWithinItsBudgetAndReadsTheRestFromDisk) {
       EXPECT_EQ(cv::norm(got.label, disk.label, cv::NORM_INF), 0.0) << entry.name;
     }
   }
+}
+
+// Training views (`train --scales --grey`): each photo once per scale, its
+// labels resized by nearest neighbour (no blended class colours), grey in
+// three equal channels; the cache gives the same pixels as the disk.
+TEST(LabelledImageViews, ScaleAndGreyEachPhotoAsAskedAndTheCacheAgrees) {
+  test::TempDir dir;
+  test_util::write_synthetic_dataset(dir.path(), 2, 0, {40, 30});
+  const std::vector<LabelledImage> images = read_facade_split(dir.path(), "train.txt");
+  const std::vector<LabelledImage> views = with_views(images, {0.5, 1.0, 2.0}, true);
+  ASSERT_EQ(views.size(), 6u);
+  EXPECT_EQ(views[0].name, images[0].name);
+  EXPECT_EQ(views[1].scale, 0.5);
+  EXPECT_EQ(views[2].scale, 1.0);
+  const DecodedImageCache cache(images, std::size_t{1} << 24);
+  for (const LabelledImage& view : views) {
+    EXPECT_TRUE(view.grey);
+    const LoadedLabelledImage seen = load_labelled_image(view);
+    EXPECT_EQ(seen.bgr.cols, static_cast<int>(40 * view.scale));
+    EXPECT_EQ(seen.bgr.rows, static_cast<int>(30 * view.scale));
+    EXPECT_EQ(seen.label.size(), seen.bgr.size());
+    std::vector<cv::Mat> channels;
+    cv::split(seen.bgr, channels);
+    EXPECT_EQ(cv::norm(channels[0], channels[1], cv::NORM_INF), 0.0);
+    EXPECT_EQ(cv::norm(channels[1], channels[2], cv::NORM_INF), 0.0);
+    // Every label colour of the view is one of the stored label image's.
+    const cv::Mat stored = load_labelled_image(images[view.name == images[0].name ? 0 : 1]).label;
+    std::set<std::tuple<int, int, int>> colours;
+    for (auto it = stored.begin<cv::Vec3b>(); it != stored.end<cv::Vec3b>(); ++it) colours.insert({(*it)[0], (*it)[1], (*it)[2]});
+    for (auto it = seen.label.begin<cv::Vec3b>(); it != seen.label.end<cv::Vec3b>(); ++it)
+      EXPECT_TRUE(colours.count({(*it)[0], (*it)[1], (*it)[2]})) << view.name << " at scale " << view.scale;
+    const LoadedLabelledImage cached = cache(view);
+    EXPECT_EQ(cv::norm(cached.bgr, seen.bgr, cv::NORM_INF), 0.0);
+    EXPECT_EQ(cv::norm(cached.label, seen.label, cv::NORM_INF), 0.0);
+  }
+  EXPECT_EQ(with_views(images, {1.0}, false).size(), 2u);
+  EXPECT_FALSE(with_views(images, {1.0}, false)[0].grey);
+  EXPECT_THROW(with_views(images, {}, false), Error);
+  EXPECT_THROW(with_views(images, {0.0}, false), Error);
+  EXPECT_THROW(with_views(images, {9.0}, false), Error);
 }
 
 }  // namespace

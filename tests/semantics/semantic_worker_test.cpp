@@ -129,9 +129,10 @@ TEST_F(SemanticWorkerTest, SkipsBadPointsAndKeyframesWithoutColour) {
   EXPECT_EQ(worker.stats().observations_labelled, 9u);
 }
 
-// A grey sequence decoded to BGR (KITTI): three equal channels. The forest
-// learnt from colour photographs; its labels on grey would be wrong, so none.
-TEST_F(SemanticWorkerTest, LeavesTheKeyframesOfAGreySequenceUnlabelled) {
+// A grey sequence decoded to BGR (KITTI): three equal channels. The colour
+// forest learnt from colour photographs; its labels on grey would be wrong,
+// so without a grey model, none.
+TEST_F(SemanticWorkerTest, LeavesTheKeyframesOfAGreySequenceUnlabelledWithoutAGreyModel) {
   cv::Mat grey;
   cv::cvtColor(colour_, grey, cv::COLOR_BGR2GRAY);
   cv::cvtColor(grey, grey, cv::COLOR_GRAY2BGR);
@@ -146,6 +147,47 @@ TEST_F(SemanticWorkerTest, LeavesTheKeyframesOfAGreySequenceUnlabelled) {
   for (const auto& [p, px] : job_of_grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
   EXPECT_EQ(worker.stats().grey_keyframes, 1u);
   EXPECT_EQ(worker.stats().observations_labelled, 0u);
+  EXPECT_FALSE(worker.stats().grey_model);
+}
+
+// With the shipped grey model (models/grey.fsmodel), grey keyframes are
+// labelled by it, with its own descriptor, and colour ones by the colour model.
+TEST_F(SemanticWorkerTest, LabelsGreyKeyframesWithTheGreyModel) {
+  const ForestModel grey_model = load_forest_model(test::source_dir() / "models/grey.fsmodel");
+  cv::Mat grey;
+  cv::cvtColor(colour_, grey, cv::COLOR_BGR2GRAY);
+  cv::cvtColor(grey, grey, cv::COLOR_GRAY2BGR);
+  const KeyFramePoints colour_job = job(true, 20);
+  std::swap(colour_, grey);
+  const KeyFramePoints grey_job = job(true, 20);
+  std::swap(colour_, grey);
+  KeyFramePointsQueue queue;
+  SemanticWorker worker(model_, queue);
+  worker.use_grey_model(grey_model);
+  worker.label(grey_job);
+  worker.label(colour_job);
+
+  const auto expected_labels = [](const ForestModel& model, const cv::Mat& image, const KeyFramePoints& points) {
+    auto descriptor = make_point_descriptor(model.descriptor, model.genome);
+    std::vector<cv::Point2f> keypoints;
+    for (const auto& [p, px] : points.points)
+      keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
+    cv::Mat shares;
+    return model.forest.predict(descriptor->compute(image, keypoints), shares);
+  };
+  // The class prior is all ones here, so the label is the forest's vote.
+  const std::vector<int> from_grey = expected_labels(grey_model, grey, grey_job);
+  const std::vector<int> from_colour = expected_labels(model_, colour_, colour_job);
+  for (std::size_t i = 0; i < grey_job.points.size(); ++i) {
+    EXPECT_EQ(grey_job.points[i].point->label().label, from_grey[i]) << "grey point " << i;
+    EXPECT_EQ(colour_job.points[i].point->label().label, from_colour[i]) << "colour point " << i;
+  }
+  const SemanticWorkerStats stats = worker.stats();
+  EXPECT_TRUE(stats.grey_model);
+  EXPECT_EQ(stats.grey_keyframes, 1u);
+  EXPECT_EQ(stats.observations_labelled, 40u);
+  // The two models are different descriptors: the thesis genome on grey, the GA's on colour.
+  EXPECT_NE(grey_model.genome.to_string(), model_.genome.to_string());
 }
 
 TEST_F(SemanticWorkerTest, TheThreadLabelsWhatIsQueuedBeforeItStops) {

@@ -120,9 +120,12 @@ TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
   SemanticsOptions defaults;
   defaults.enabled = true;
   defaults.model = "models/default.fsmodel";
+  defaults.grey_model = "models/grey.fsmodel";
   const SemanticsOptions shipped = load_semantics_options(test::source_dir() / "configs" / "semantics.yaml");
   EXPECT_EQ(shipped.enabled, defaults.enabled);
   EXPECT_EQ(shipped.model, defaults.model);
+  EXPECT_EQ(shipped.grey_model, defaults.grey_model);
+  EXPECT_EQ(shipped.unreliable_verify_px, defaults.unreliable_verify_px);
   EXPECT_EQ(shipped.class_prior, defaults.class_prior);
   EXPECT_EQ(shipped.class_prior_weight, defaults.class_prior_weight);
   EXPECT_EQ(shipped.unreliable_classes, defaults.unreliable_classes);
@@ -156,6 +159,8 @@ TEST(SemanticsOptions, RejectsBadValues) {
               HasSubstr("class_prior.window"));
   EXPECT_THAT(semantics_error("modell: x.fsmodel\n"), HasSubstr("modell"));
   EXPECT_THAT(semantics_error("unreliable_weight: 2\n"), HasSubstr("unreliable_weight"));
+  EXPECT_THAT(semantics_error("unreliable_verify_px: -1\n"), HasSubstr("unreliable_verify_px"));
+  EXPECT_THAT(semantics_error("grey_model: [a, b]\n"), HasSubstr("grey_model"));
 }
 
 }  // namespace

@@ -109,7 +109,8 @@ TEST(System, SemanticWorkerLabelsTheNewPoints) {
   for (const bool synchronous : {true, false}) {
     SlamOptions options = test::synchronous_options();
     options.synchronous = synchronous;
-    options.semantics = {true, test::source_dir() / "models" / "default.fsmodel"};
+    options.semantics.enabled = true;
+    options.semantics.model = test::source_dir() / "models" / "default.fsmodel";
     System system(scene.camera(), options);
     for (int i = 0; i < scene.size(); ++i)
       system.process({static_cast<std::size_t>(i), scene.timestamp(i), frames[static_cast<std::size_t>(i)]});

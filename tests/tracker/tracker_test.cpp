@@ -2,6 +2,7 @@
 // whose points are the plane's FAST corners at every pyramid level, then
 // views along a smooth path. Checks the poses against the truth, the quality
 // and keyframe decisions, and relocalisation after a blank frame.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -205,6 +206,67 @@ TEST_F(PlaneTracking, IsLostWhenNothingOfTheMapIsInView) {
   EXPECT_EQ(r.quality, TrackingQuality::bad);
   EXPECT_EQ(r.fine_counts.projected, 0);
   EXPECT_TRUE(tracker.is_lost());
+}
+
+
+// Label-aware tracking on a scene where nothing moves: the points labelled
+// with an unreliable class stand exactly where the pose puts them, so the
+// verification gives them their full weight back when the reliable points
+// alone are few (as on a street filmed from a car, whose near structure is
+// parked cars and trees), and never when it is switched off or when the
+// reliable points are many.
+class LabelledPlaneTracking : public PlaneTracking {
+ protected:
+  // Labels every point but one in `every` as a car, the unreliable class here.
+  void label_cars(int every) {
+    ClassVotes car{};
+    car[2] = 1.f;  // LabelMeFacade's car
+    int i = 0;
+    for (const auto& point : map_.points())
+      if (i++ % every != 0) point->add_votes(car);
+  }
+  // Tracks 20 frames of the path; returns the fine stage's verified points.
+  int track_path(const TrackerOptions& options, double& worst_position_error) {
+    Tracker tracker(camera_, map_, queue_, options);
+    tracker.start(SE3d(), 0);
+    int verified = 0;
+    worst_position_error = 0.0;
+    for (int i = 1; i <= 20; ++i) {
+      const SE3d truth = path_pose(i);
+      const TrackingResult r = tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, truth)));
+      EXPECT_TRUE(r.tracked) << "frame " << i;
+      EXPECT_GT(r.points_down_weighted, 0) << "frame " << i;
+      EXPECT_LE(r.points_verified, r.points_down_weighted) << "frame " << i;
+      verified += r.points_verified;
+      worst_position_error = std::max(worst_position_error, position_error(r.T_c_w, truth));
+    }
+    return verified;
+  }
+  static TrackerOptions label_aware(double verify_px) {
+    TrackerOptions options;
+    options.unreliable_classes.set(2);
+    options.unreliable_min_confidence = 0.5f;
+    options.unreliable_weight = 0.1;
+    options.min_reliable_points = 100;
+    options.unreliable_verify_px = verify_px;
+    return options;
+  }
+};
+
+TEST_F(LabelledPlaneTracking, GivesStaticDownWeightedPointsTheirWeightBackWhenReliableOnesAreFew) {
+  label_cars(10);  // ~50 reliable points, ~480 cars
+  double error = 0.0;
+  const int verified = track_path(label_aware(2.0), error);
+  EXPECT_GT(verified, 20 * 200) << "the static car points were not verified";
+  EXPECT_LT(error, 2e-3);
+  EXPECT_EQ(track_path(label_aware(0.0), error), 0) << "verification switched off, yet points were verified";
+}
+
+TEST_F(LabelledPlaneTracking, KeepsTheDownWeightingWhereReliablePointsAreMany) {
+  label_cars(2);  // half of them reliable: ~260
+  double error = 0.0;
+  EXPECT_EQ(track_path(label_aware(2.0), error), 0);
+  EXPECT_LT(error, 2e-3);
 }
 
 }  // namespace
