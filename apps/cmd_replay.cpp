@@ -54,6 +54,7 @@ const std::vector<std::string> kReplayOutputNames = {"trajectory.txt", "trajecto
 struct ReplayOptions {
   fs::path sequence, camera, config, out, gt, gt_labels, save_map, load_map;
   bool sync = false;
+  bool free_running = false;  // threaded: never wait for the map maker (a live camera's timing)
   std::size_t start = 0, stride = 1, limit = 0, loop = 1;
   std::string on_corrupt = "skip";
   std::string semantics;  // on, off, or empty: as the semantics config says
@@ -135,6 +136,7 @@ int run_replay(ReplayOptions o) {
   }
   SlamOptions slam = o.config.empty() ? SlamOptions{} : load_slam_options(o.config);
   slam.synchronous = o.sync;
+  if (o.free_running) slam.max_keyframes_behind = -1;
   slam.semantics = semantics_options(o);
 
   SequenceOptions seq;
@@ -260,6 +262,10 @@ void add_replay_command(CLI::App& app) {
                   "Folder of ground-truth label PNGs named like the frames: adds label accuracy to the report "
                   "(default: label/ beside a synthetic sequence)");
   cmd->add_flag("--sync", options->sync, "Run the map maker inline: reproducible results");
+  cmd->add_flag("--free-running", options->free_running,
+                "Threaded: never wait for the map maker, as with a live camera (by default the tracker waits when "
+                "the map maker is two keyframes behind, so a busy machine does not make it track on a stale map)")
+      ->excludes("--sync");
   cmd->add_option("--save-map", options->save_map, "Where to write the map (default: OUT/map.fslmap)");
   cmd->add_option("--load-map", options->load_map, "Start from a saved map instead of initialising");
   // Ranges checked as numbers: a negative count must not wrap round to 2^64 - 5.

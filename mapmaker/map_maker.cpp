@@ -327,9 +327,28 @@ void MapMaker::run_global_ba() {
   keyframes_since_global_ba_ = 0;
 }
 
+void MapMaker::count_candidate_done() {
+  {
+    std::lock_guard lock(done_mutex_);
+    ++candidates_done_;
+  }
+  done_changed_.notify_all();
+}
+
+std::size_t MapMaker::candidates_done() const {
+  std::lock_guard lock(done_mutex_);
+  return candidates_done_;
+}
+
+void MapMaker::wait_for_candidates(std::size_t count) const {
+  std::unique_lock lock(done_mutex_);
+  done_changed_.wait(lock, [&] { return candidates_done_ >= count || !running_; });
+}
+
 void MapMaker::process_pending() {
   while (auto candidate = queue_.try_pop()) {
     add_keyframe(std::move(*candidate));
+    count_candidate_done();
     if (keyframes_since_global_ba_ >= static_cast<std::size_t>(options_.sync_global_ba_every)) {
       run_global_ba();
       remove_outlier_points();
@@ -339,6 +358,10 @@ void MapMaker::process_pending() {
 
 void MapMaker::start() {
   if (thread_.joinable()) return;
+  {
+    std::lock_guard lock(done_mutex_);
+    running_ = true;
+  }
   thread_ = std::thread([this] { run(); });
 }
 
@@ -346,6 +369,11 @@ void MapMaker::stop() {
   if (!thread_.joinable()) return;
   queue_.close();
   thread_.join();
+  {
+    std::lock_guard lock(done_mutex_);
+    running_ = false;
+  }
+  done_changed_.notify_all();
 }
 
 void MapMaker::reset() {
@@ -358,6 +386,7 @@ void MapMaker::run() {
     queue_.wait_until([&] { return map_changed_since_global_ba_; });
     if (auto candidate = queue_.try_pop()) {
       add_keyframe(std::move(*candidate));
+      count_candidate_done();
       continue;
     }
     if (queue_.closed()) {

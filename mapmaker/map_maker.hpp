@@ -11,6 +11,7 @@
 // - synchronous (--sync): the replay loop calls process_pending() right after
 //   the tracker, so every run with the same input gives the same map.
 #include <atomic>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -72,6 +73,13 @@ class MapMaker {
   void start();
   void stop();  // finishes queued candidates, then joins
 
+  // Keyframe candidates taken from the queue and dealt with (made keyframes
+  // or refused), since construction. wait_for_candidates(n) blocks until n
+  // are, or the thread is not running: a replay of files lets the tracker
+  // wait for each keyframe it asks for (SlamOptions::wait_for_keyframes).
+  std::size_t candidates_done() const;
+  void wait_for_candidates(std::size_t count) const;
+
   // A map reset (the map is being cleared): forgets the old map's global-BA
   // bookkeeping; statistics run on. Threaded mode: stop() first.
   void reset();
@@ -106,6 +114,12 @@ class MapMaker {
 
   mutable std::mutex stats_mutex_;
   MapMakerStats stats_;
+
+  void count_candidate_done();
+  mutable std::mutex done_mutex_;
+  mutable std::condition_variable done_changed_;
+  std::size_t candidates_done_ = 0;  // under done_mutex_
+  bool running_ = false;             // under done_mutex_: the thread is between start() and stop()
 };
 
 }  // namespace facadeslam

@@ -73,6 +73,7 @@ void System::start_tracking(const SE3d& T_c_w, std::size_t frame_index, const Ei
   initialised_ = true;
   initialised_at_ = frame_index;
   tracker_.start(T_c_w, frame_index, velocity);
+  keyframes_requested_ = map_maker_.candidates_done();
   if (!options_.synchronous) {
     map_maker_.start();
     if (worker_) worker_->start();
@@ -124,6 +125,13 @@ FrameReport System::process(Frame frame) {
     if (options_.synchronous) {
       map_maker_.process_pending();
       if (worker_) worker_->process_pending();
+    } else if (report.tracking.keyframe_requested && options_.max_keyframes_behind >= 0) {
+      // With the default of 1, the one just asked for is taken in while the
+      // next frames are tracked (the map maker's work overlaps the
+      // tracker's, as it should); the one before it must be in by now.
+      ++keyframes_requested_;
+      const auto behind = static_cast<std::size_t>(options_.max_keyframes_behind);
+      if (keyframes_requested_ > behind) map_maker_.wait_for_candidates(keyframes_requested_ - behind);
     }
     log_tracking(report);
     if (!report.has_pose && should_reset(frame.index)) {

@@ -107,6 +107,10 @@ class System {
   std::size_t initialised_at_ = 0;  // the frame the map was initialised on
   bool map_loaded_ = false;  // a loaded map is relocalised against, never reset
   std::size_t map_resets_ = 0, poses_discarded_ = 0;
+  // Keyframe candidates the tracker has asked for (the map maker's count of
+  // those done at start_tracking, plus one per request): what
+  // SlamOptions::max_keyframes_behind waits for.
+  std::size_t keyframes_requested_ = 0;
   RelativeTrajectory trajectory_;
 };
 

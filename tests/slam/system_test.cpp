@@ -2,8 +2,12 @@
 // photos are committed, so this runs on a fresh clone): it initialises by
 // itself, then tracks every following frame, in synchronous mode and with
 // the map maker on its own thread (the test the ThreadSanitizer build runs).
+#include <future>
+
 #include <gtest/gtest.h>
 
+#include "core/camera/camera_yaml.hpp"
+#include "mapmaker/map_maker.hpp"
 #include "tests/slam/slam_test_run.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -96,6 +100,47 @@ TEST(System, ThreadedMapMakerKeepsUpWithTheTracker) {
   const Trajectory final = system.final_trajectory();
   ASSERT_EQ(final.size(), log.estimate.size());
   EXPECT_LT(test::evaluate(scene, final).ate_percent_of_path, 10.0);
+}
+
+// A threaded replay of files waits for the map maker
+// (SlamOptions::max_keyframes_behind; 0 here): when process() returns from a
+// frame that asked for a keyframe, the map maker has taken it in, however
+// busy the machine is. (The default, 1, waits for the one before.)
+TEST(System, ThreadedReplayWaitsForTheKeyframesItAsksFor) {
+  test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 90);
+  SlamOptions options;
+  options.synchronous = false;
+  EXPECT_EQ(options.max_keyframes_behind, 1);  // the default
+  options.max_keyframes_behind = 0;
+  System system(scene.camera(), options);
+  std::size_t requested = 0;
+  for (int i = 0; i < scene.size(); ++i) {
+    const FrameReport r = system.process({static_cast<std::size_t>(i), scene.timestamp(i), scene.render(i)});
+    if (r.status == FrameStatus::initialised) {
+      ASSERT_EQ(system.map_maker_stats().keyframes_added, 2u);
+    }
+    if (!r.tracking.keyframe_requested) continue;
+    ++requested;
+    EXPECT_EQ(system.map_maker_stats().keyframes_added, 2u + requested) << "frame " << i;
+  }
+  system.finish();
+  EXPECT_GT(requested, 0u);
+}
+
+// The wait never outlives the map maker's thread: not started, it returns at
+// once; a waiter still blocked when the thread stops is woken.
+TEST(MapMaker, AWaitForCandidatesEndsWhenTheThreadIsNotRunning) {
+  Map map;
+  KeyFrameQueue queue;
+  MapMaker map_maker(load_camera(test::source_dir() / "configs" / "camera" / "synthetic-640x480.yaml"), map, queue,
+                     MapMakerOptions{});
+  map_maker.wait_for_candidates(3);  // never started
+  EXPECT_EQ(map_maker.candidates_done(), 0u);
+  map_maker.start();
+  auto waiter = std::async(std::launch::async, [&] { map_maker.wait_for_candidates(1); });
+  map_maker.stop();
+  waiter.get();
+  EXPECT_EQ(map_maker.candidates_done(), 0u);
 }
 
 // With the shipped model the semantic worker labels the map's points:
