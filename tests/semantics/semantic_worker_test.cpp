@@ -43,6 +43,22 @@ class SemanticWorkerTest : public ::testing::Test {
     return out;
   }
 
+  // The photo as a grey camera's frame reaches the worker: three equal channels.
+  cv::Mat grey_photo() const {
+    cv::Mat grey;
+    cv::cvtColor(colour_, grey, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(grey, grey, cv::COLOR_GRAY2BGR);
+    return grey;
+  }
+  // job() on the grey photo.
+  KeyFramePoints grey_job(std::size_t count) {
+    cv::Mat grey = grey_photo();
+    std::swap(colour_, grey);
+    KeyFramePoints out = job(true, count);
+    std::swap(colour_, grey);
+    return out;
+  }
+
   cv::Mat colour_;
   ForestModel model_;
 };
@@ -133,14 +149,9 @@ TEST_F(SemanticWorkerTest, SkipsBadPointsAndKeyframesWithoutColour) {
 // forest learnt from colour photographs; its labels on grey would be wrong,
 // so without a grey model, none.
 TEST_F(SemanticWorkerTest, LeavesTheKeyframesOfAGreySequenceUnlabelledWithoutAGreyModel) {
-  cv::Mat grey;
-  cv::cvtColor(colour_, grey, cv::COLOR_BGR2GRAY);
-  cv::cvtColor(grey, grey, cv::COLOR_GRAY2BGR);
-  EXPECT_TRUE(is_grey(grey));
+  EXPECT_TRUE(is_grey(grey_photo()));
   EXPECT_FALSE(is_grey(colour_));
-  std::swap(colour_, grey);
-  const KeyFramePoints job_of_grey = job(true, 10);
-  std::swap(colour_, grey);
+  const KeyFramePoints job_of_grey = grey_job(10);
   KeyFramePointsQueue queue;
   SemanticWorker worker(model_, queue);
   worker.label(job_of_grey);
@@ -154,17 +165,13 @@ TEST_F(SemanticWorkerTest, LeavesTheKeyframesOfAGreySequenceUnlabelledWithoutAGr
 // labelled by it, with its own descriptor, and colour ones by the colour model.
 TEST_F(SemanticWorkerTest, LabelsGreyKeyframesWithTheGreyModel) {
   const ForestModel grey_model = load_forest_model(test::source_dir() / "models/grey.fsmodel");
-  cv::Mat grey;
-  cv::cvtColor(colour_, grey, cv::COLOR_BGR2GRAY);
-  cv::cvtColor(grey, grey, cv::COLOR_GRAY2BGR);
+  const cv::Mat grey = grey_photo();
   const KeyFramePoints colour_job = job(true, 20);
-  std::swap(colour_, grey);
-  const KeyFramePoints grey_job = job(true, 20);
-  std::swap(colour_, grey);
+  const KeyFramePoints grey_points = grey_job(20);
   KeyFramePointsQueue queue;
   SemanticWorker worker(model_, queue);
   worker.use_grey_model(grey_model);
-  worker.label(grey_job);
+  worker.label(grey_points);
   worker.label(colour_job);
 
   const auto expected_labels = [](const ForestModel& model, const cv::Mat& image, const KeyFramePoints& points) {
@@ -176,10 +183,10 @@ TEST_F(SemanticWorkerTest, LabelsGreyKeyframesWithTheGreyModel) {
     return model.forest.predict(descriptor->compute(image, keypoints), shares);
   };
   // The class prior is all ones here, so the label is the forest's vote.
-  const std::vector<int> from_grey = expected_labels(grey_model, grey, grey_job);
+  const std::vector<int> from_grey = expected_labels(grey_model, grey, grey_points);
   const std::vector<int> from_colour = expected_labels(model_, colour_, colour_job);
-  for (std::size_t i = 0; i < grey_job.points.size(); ++i) {
-    EXPECT_EQ(grey_job.points[i].point->label().label, from_grey[i]) << "grey point " << i;
+  for (std::size_t i = 0; i < grey_points.points.size(); ++i) {
+    EXPECT_EQ(grey_points.points[i].point->label().label, from_grey[i]) << "grey point " << i;
     EXPECT_EQ(colour_job.points[i].point->label().label, from_colour[i]) << "colour point " << i;
   }
   const SemanticWorkerStats stats = worker.stats();
