@@ -263,8 +263,8 @@ void add_replay_command(CLI::App& app) {
                   "(default: label/ beside a synthetic sequence)");
   cmd->add_flag("--sync", options->sync, "Run the map maker inline: reproducible results");
   cmd->add_flag("--free-running", options->free_running,
-                "Threaded: never wait for the map maker, as with a live camera (by default the tracker waits when "
-                "the map maker is two keyframes behind, so a busy machine does not make it track on a stale map)")
+                "Threaded: never wait for the map maker, as with a live camera (by default the tracker waits until "
+                "the map maker has taken in each keyframe, so a busy machine does not make it track on a stale map)")
       ->excludes("--sync");
   cmd->add_option("--save-map", options->save_map, "Where to write the map (default: OUT/map.fslmap)");
   cmd->add_option("--load-map", options->load_map, "Start from a saved map instead of initialising");

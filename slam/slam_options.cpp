@@ -114,6 +114,7 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
     prior->finish();
   }
   options.class_prior_weight = root.get_double("class_prior_weight", Range::closed(0, 1), options.class_prior_weight);
+  options.context_scale = root.get_double("context_scale", Range::closed(0, 0.9), options.context_scale);
   if (root.has("unreliable_classes")) {
     options.unreliable_classes.reset();
     for (const std::string& name : root.get_choices("unreliable_classes", class_names()))

@@ -33,6 +33,7 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
   };
   auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model), queue, options.class_weights());
   if (!options.grey_model.empty()) worker->use_grey_model(load(options.grey_model));
+  worker->use_context_scale(options.context_scale);
   return worker;
 }
 
@@ -126,9 +127,9 @@ FrameReport System::process(Frame frame) {
       map_maker_.process_pending();
       if (worker_) worker_->process_pending();
     } else if (report.tracking.keyframe_requested && options_.max_keyframes_behind >= 0) {
-      // With the default of 1, the one just asked for is taken in while the
-      // next frames are tracked (the map maker's work overlaps the
-      // tracker's, as it should); the one before it must be in by now.
+      // With 0 (the default) the keyframe just asked for is in before the
+      // next frame; with 1 it is taken in while the next frames are tracked
+      // and only the one before must be in by now.
       ++keyframes_requested_;
       const auto behind = static_cast<std::size_t>(options_.max_keyframes_behind);
       if (keyframes_requested_ > behind) map_maker_.wait_for_candidates(keyframes_requested_ - behind);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <opencv2/imgproc.hpp>
+
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -41,7 +43,32 @@ void SemanticWorker::use_grey_model(ForestModel model) {
   stats_.grey_model = true;
 }
 
+void SemanticWorker::use_context_scale(double scale) {
+  if (!(scale >= 0.0 && scale < 1.0)) throw Error("semantic worker: a context scale in [0, 1) (0 = none), not " + std::to_string(scale));
+  context_scale_ = scale;
+}
+
 SemanticWorker::~SemanticWorker() { stop(); }
+
+cv::Mat SemanticWorker::vote_shares(const Classifier& classifier, const cv::Mat& image,
+                                    const std::vector<cv::Point2f>& keypoints, double scale) {
+  cv::Mat rows;
+  if (scale == 1.0) {
+    rows = classifier.descriptor->compute(image, keypoints);
+  } else {
+    cv::Mat shrunk;
+    cv::resize(image, shrunk, cv::Size(), scale, scale, cv::INTER_AREA);
+    std::vector<cv::Point2f> moved;
+    moved.reserve(keypoints.size());
+    for (const cv::Point2f& k : keypoints)
+      moved.emplace_back(std::min(k.x * static_cast<float>(scale), shrunk.cols - 1.f),
+                         std::min(k.y * static_cast<float>(scale), shrunk.rows - 1.f));
+    rows = classifier.descriptor->compute(shrunk, moved);
+  }
+  cv::Mat shares;
+  classifier.model.forest.predict(rows, shares);
+  return shares;
+}
 
 void SemanticWorker::label(const KeyFramePoints& job) {
   const Stopwatch watch;
@@ -68,9 +95,8 @@ void SemanticWorker::label(const KeyFramePoints& job) {
     points.push_back(point);
   }
   if (!points.empty()) {
-    const cv::Mat rows = classifier->descriptor->compute(colour, keypoints);
-    cv::Mat shares;
-    classifier->model.forest.predict(rows, shares);
+    cv::Mat shares = vote_shares(*classifier, colour, keypoints, 1.0);
+    if (context_scale_ > 0.0) shares += vote_shares(*classifier, colour, keypoints, context_scale_);
     const std::vector<int>& columns = classifier->model.forest.classes();
     for (std::size_t i = 0; i < points.size(); ++i) {
       ClassVotes votes{};

@@ -47,6 +47,11 @@ class SemanticWorker {
   // colour model, shown grey, calls a third of a street sky. Call before
   // start(). Throws Error if its descriptor does not fit its forest.
   void use_grey_model(ForestModel model);
+  // Also classify each point in the keyframe shrunk by `scale` (0 < scale < 1;
+  // 0 = not) and add those votes to the full-size ones: the descriptor's patch
+  // then covers 1/scale times more of the facade around the point, context a
+  // 21-pixel patch at a window's corner does not have. Call before start().
+  void use_context_scale(double scale);
   ~SemanticWorker();
   SemanticWorker(const SemanticWorker&) = delete;
   SemanticWorker& operator=(const SemanticWorker&) = delete;
@@ -72,10 +77,15 @@ class SemanticWorker {
     std::unique_ptr<PointDescriptor> descriptor;
   };
   static Classifier make_classifier(ForestModel model);
+  // The forest's vote shares (one row per keypoint, one column per forest
+  // class) for the descriptor at `keypoints` in `image` shrunk by `scale`.
+  static cv::Mat vote_shares(const Classifier& classifier, const cv::Mat& image,
+                             const std::vector<cv::Point2f>& keypoints, double scale);
 
   Classifier colour_;
   std::optional<Classifier> grey_;
   ClassVotes class_weights_;
+  double context_scale_ = 0.0;
   KeyFramePointsQueue& queue_;
   std::thread thread_;
   mutable std::mutex stats_mutex_;

@@ -88,6 +88,41 @@ TEST_F(SemanticWorkerTest, LabelsEveryPointWithTheForestsVoteAtItsPatch) {
   EXPECT_EQ(stats.observations_skipped, 0u);
 }
 
+// With a context scale the point's votes are its patch's in the keyframe and
+// in the keyframe shrunk to that scale, added: the label is their sum's arg-max.
+TEST_F(SemanticWorkerTest, AddsTheVotesOfTheShrunkKeyframeWithAContextScale) {
+  KeyFramePointsQueue queue;
+  SemanticWorker worker(model_, queue);
+  worker.use_context_scale(0.5);
+  const KeyFramePoints points = job(true);
+  worker.label(points);
+
+  auto descriptor = make_point_descriptor(model_.descriptor, model_.genome);
+  cv::Mat half;
+  cv::resize(colour_, half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
+  std::vector<cv::Point2f> keypoints, halved;
+  for (const auto& [p, px] : points.points) {
+    keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
+    halved.emplace_back(static_cast<float>(px.x()) * 0.5f, static_cast<float>(px.y()) * 0.5f);
+  }
+  cv::Mat full_shares, half_shares;
+  model_.forest.predict(descriptor->compute(colour_, keypoints), full_shares);
+  model_.forest.predict(descriptor->compute(half, halved), half_shares);
+  const cv::Mat sum = full_shares + half_shares;
+  int differs_from_full_size = 0;
+  for (int i = 0; i < sum.rows; ++i) {
+    cv::Point best, best_full;
+    cv::minMaxLoc(sum.row(i), nullptr, nullptr, nullptr, &best);
+    cv::minMaxLoc(full_shares.row(i), nullptr, nullptr, nullptr, &best_full);
+    const SemanticLabel label = points.points[static_cast<std::size_t>(i)].point->label();
+    EXPECT_EQ(label.label, model_.forest.classes()[static_cast<std::size_t>(best.x)]) << "point " << i;
+    differs_from_full_size += best.x != best_full.x;
+  }
+  EXPECT_GT(differs_from_full_size, 0) << "the shrunk keyframe's votes changed no label: the test shows nothing";
+  EXPECT_THROW(worker.use_context_scale(1.0), Error);
+  EXPECT_THROW(worker.use_context_scale(-0.5), Error);
+}
+
 // A point measured in a second keyframe gets that view's votes added to its
 // first view's: here the "second keyframe" sees each point where the first
 // saw another, so the fused votes are the two rows' sum.

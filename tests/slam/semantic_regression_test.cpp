@@ -2,6 +2,10 @@
 // (reproducible bit for bit) with the shipped model, on the synthetic
 // streets, whose renderer gives every frame's true labels. Needs
 // ../shared/data; prints its figures ("[  FIGURES ]" lines).
+#include <cmath>
+#include <map>
+#include <set>
+
 #include <gtest/gtest.h>
 
 #include "semantics/evaluation/map_label_accuracy.hpp"
@@ -63,12 +67,12 @@ SemanticRun run_scene(const std::string& name, bool semantics_on) {
 
 // The walk with labels: nearly every point labelled, most of them right, and
 // tracking as good as ever. The issue asks for a label accuracy of 0.70; the
-// shipped forest with view fusion and the class prior gives 0.635 here
-// (fusion alone 0.43, the full prior 0.69 with no window or door left:
+// shipped forest with view fusion, the class prior and the context of the
+// keyframe shrunk to a quarter gives 0.674 here (without the context 0.635;
+// fusion alone 0.43, the full prior 0.69 with no window or door left:
 // windows are the forest's weak class, 12 % precision on LabelMeFacade
 // itself). The figure moves with the map: over the tracker's sampling seeds
-// 1-5 it is 0.631-0.640 (before the tracker verified static down-weighted
-// points, 0.639-0.661), so the threshold sits below that spread; NOTES.md
+// 1-3 it is 0.671-0.676, so the threshold sits below that spread; NOTES.md
 // has the options for the rest.
 TEST(SemanticRegression, StreetWalkIsLabelledAndStillTrackedWithinPointThreePercent) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
@@ -76,7 +80,7 @@ TEST(SemanticRegression, StreetWalkIsLabelledAndStillTrackedWithinPointThreePerc
   ASSERT_GT(run.points, 0u);
   EXPECT_GE(static_cast<double>(run.points - run.labels.unlabelled), 0.9 * static_cast<double>(run.points));
   ASSERT_TRUE(run.labels.accuracy().has_value());
-  EXPECT_GE(*run.labels.accuracy(), 0.62);
+  EXPECT_GE(*run.labels.accuracy(), 0.65);
   EXPECT_TRUE(run.log.lost_frames().empty());
   EXPECT_LE(run.ate.ate_percent_of_path, 0.3);
 }
@@ -95,25 +99,77 @@ TEST(SemanticRegression, StreetDynamicTracksBetterWithLabels) {
   EXPECT_LE(on.ate.ate_percent_of_path, 0.85 * off.ate.ate_percent_of_path);
 }
 
+// A perfect classifier, for the test of what labels are for: every new map
+// point gets the renderer's true class at its pixel in its source keyframe as
+// an overwhelming vote (in --sync mode nothing else writes votes meanwhile).
+class TrueLabeller {
+ public:
+  void label_new_points(const Map& map, const test::SceneFrames& scene) {
+    std::map<KeyFrame::Id, std::size_t> frame_of;
+    for (const KeyFrameSnapshot& kf : map.snapshot_keyframes()) frame_of[kf.keyframe->id()] = kf.keyframe->frame_index();
+    for (const PointSnapshot& p : map.snapshot_points()) {
+      const auto frame = frame_of.find(p.source.keyframe_id);
+      if (frame == frame_of.end() || !labelled_.insert(p.point->id()).second) continue;
+      const cv::Mat truth = scene.labels(frame->second);
+      const int x = static_cast<int>(std::lround(p.source.pixel_level0.x()));
+      const int y = static_cast<int>(std::lround(p.source.pixel_level0.y()));
+      ASSERT_TRUE(x >= 0 && y >= 0 && x < truth.cols && y < truth.rows);
+      ClassVotes votes{};
+      votes[truth.at<std::uint8_t>(y, x)] = 1e6f;
+      p.point->add_votes(votes);
+    }
+  }
+
+ private:
+  std::set<std::size_t> labelled_;
+};
+
+SemanticRun run_with_true_labels(const std::string& name, double unreliable_weight) {
+  test::SceneFrames scene(test::scene_file(name));
+  scene.keep_labels();
+  SlamOptions options = options_with_semantics(true);
+  options.semantics.unreliable_weight = unreliable_weight;
+  System system(scene.camera(), options);
+  TrueLabeller labeller;
+  SemanticRun run;
+  for (int i = 0; i < scene.size(); ++i) {
+    run.log.add(system.process({static_cast<std::size_t>(i), scene.timestamp(i), scene.render(i)}));
+    labeller.label_new_points(system.map(), scene);
+  }
+  system.finish();
+  run.ate = test::evaluate(scene, run.log.estimate);
+  run.points = system.map().point_count();
+  test::report_figures(name + ", true labels", run.log, run.ate);
+  return run;
+}
+
 // Traffic that fills the view: cars driving beside the walker at its own
 // pace pull a label-blind tracker off (the scene must prove that: >= 2x its
 // static twin, the same street and path with nothing moving). The issue asks
-// that the labels bring it back to <= 1.2x the twin; with the shipped forest
-// they cannot (it calls 31 % of the close-up car points car, and a forest
-// also trained on renders of train-split cars 25 %: docs/benchmarks.md), so
-// the test holds what is true today: the labels never make it worse and no
-// frame is lost. The figures are printed for both.
-TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndLabelsDoNotMakeItWorse) {
+// that the labels bring it back to <= 1.2x the twin. With true labels and the
+// unreliable classes left out of the search (weight 0) they do (0.23 % against
+// the twin's 0.30 %), which this test holds; with any weight above 0 they do
+// not (0.001-0.1: 8.4-8.7 %): cars keeping pace look still, so even a small
+// weight lets them steer the pose, and keyframes that measure them steer the
+// bundle adjustment. The shipped forest calls only 37-46 % of these close-up
+// car points car (docs/benchmarks.md), too few for either weight, so for its
+// labels the test holds what is true today: never worse than no labels, no
+// frame lost. The figures are printed for all four runs.
+TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndTrueLabelsBringItBack) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
   const SemanticRun twin = run_scene("street-traffic-static", false);
   const SemanticRun off = run_scene("street-traffic", false);
   const SemanticRun on = run_scene("street-traffic", true);
-  std::printf("[  FIGURES ] street-traffic: ATE %.3f %% with labels, %.3f %% without, static twin %.3f %%; lost %zu / "
-              "%zu\n",
-              on.ate.ate_percent_of_path, off.ate.ate_percent_of_path, twin.ate.ate_percent_of_path,
-              on.log.lost_frames().size(), off.log.lost_frames().size());
+  const SemanticRun truth = run_with_true_labels("street-traffic", 0.0);
+  std::printf("[  FIGURES ] street-traffic: ATE %.3f %% with the forest's labels, %.3f %% with true labels left out, "
+              "%.3f %% without labels, static twin %.3f %%; lost %zu / %zu / %zu\n",
+              on.ate.ate_percent_of_path, truth.ate.ate_percent_of_path, off.ate.ate_percent_of_path,
+              twin.ate.ate_percent_of_path, on.log.lost_frames().size(), truth.log.lost_frames().size(),
+              off.log.lost_frames().size());
   EXPECT_TRUE(twin.log.lost_frames().empty());
   EXPECT_GE(off.ate.ate_percent_of_path, 2.0 * twin.ate.ate_percent_of_path);
+  EXPECT_TRUE(truth.log.lost_frames().empty());
+  EXPECT_LE(truth.ate.ate_percent_of_path, 1.2 * twin.ate.ate_percent_of_path);
   EXPECT_TRUE(on.log.lost_frames().empty());
   EXPECT_GT(on.dropped, 0u) << "label-aware tracking never weighed a car point down";
   EXPECT_LE(on.ate.ate_percent_of_path, 1.05 * off.ate.ate_percent_of_path);

@@ -128,6 +128,7 @@ TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_EQ(shipped.unreliable_verify_px, defaults.unreliable_verify_px);
   EXPECT_EQ(shipped.class_prior, defaults.class_prior);
   EXPECT_EQ(shipped.class_prior_weight, defaults.class_prior_weight);
+  EXPECT_EQ(shipped.context_scale, defaults.context_scale);
   EXPECT_EQ(shipped.unreliable_classes, defaults.unreliable_classes);
   EXPECT_EQ(shipped.min_confidence, defaults.min_confidence);
   EXPECT_EQ(shipped.min_reliable_points, defaults.min_reliable_points);
@@ -161,6 +162,7 @@ TEST(SemanticsOptions, RejectsBadValues) {
   EXPECT_THAT(semantics_error("unreliable_weight: 2\n"), HasSubstr("unreliable_weight"));
   EXPECT_THAT(semantics_error("unreliable_verify_px: -1\n"), HasSubstr("unreliable_verify_px"));
   EXPECT_THAT(semantics_error("grey_model: [a, b]\n"), HasSubstr("grey_model"));
+  EXPECT_THAT(semantics_error("context_scale: 1\n"), HasSubstr("context_scale"));
 }
 
 }  // namespace
