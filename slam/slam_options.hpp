@@ -88,8 +88,8 @@ struct SlamOptions {
   // work and tracks on a stale map. The demo's ATE, 5-6 runs each, alone /
   // beside a busy core: free-running 0.43-0.51 / 0.47-1.19 %; 1 (the map
   // maker may be one behind) 0.44-0.63 / 0.43-0.53 %; 0 (each keyframe is
-  // in before the next frame) 0.46-0.48 / 0.42-0.47 %, for a fifth of the
-  // threaded frame rate (still ~2x the 60 frames/s). The map maker's
+  // in before the next frame) 0.46-0.48 / 0.42-0.47 %, for a third of the
+  // threaded frame rate (96-103 instead of 143-156 frames/s on the bench). The map maker's
   // work still overlaps the tracker's between keyframes. -1: never wait, as
   // a live camera cannot (`replay --free-running`).
   int max_keyframes_behind = 0;

@@ -26,6 +26,14 @@ std::optional<std::pair<std::size_t, std::size_t>> MapLabelAccuracy::commonest_m
   return worst;
 }
 
+std::optional<std::size_t> true_class_at(const cv::Mat& truth, const Eigen::Vector2d& pixel) {
+  const int x = static_cast<int>(std::lround(pixel.x())), y = static_cast<int>(std::lround(pixel.y()));
+  if (truth.empty() || x < 0 || y < 0 || x >= truth.cols || y >= truth.rows) return std::nullopt;
+  const std::size_t c = truth.at<std::uint8_t>(y, x);
+  if (c >= kSemanticClasses.size()) return std::nullopt;
+  return c;
+}
+
 MapLabelAccuracy map_label_accuracy(const Map& map, const GroundTruthLabels& truth) {
   std::map<KeyFrame::Id, cv::Mat> truth_of_keyframe;
   for (const KeyFrameSnapshot& kf : map.snapshot_keyframes()) {
@@ -45,18 +53,12 @@ MapLabelAccuracy map_label_accuracy(const Map& map, const GroundTruthLabels& tru
       continue;
     }
     const auto it = truth_of_keyframe.find(p.source.keyframe_id);
-    const Eigen::Vector2d& px = p.source.pixel_level0;
-    const int x = static_cast<int>(std::lround(px.x())), y = static_cast<int>(std::lround(px.y()));
-    if (it == truth_of_keyframe.end() || it->second.empty() || x < 0 || y < 0 || x >= it->second.cols ||
-        y >= it->second.rows) {
+    const auto found = it == truth_of_keyframe.end() ? std::nullopt : true_class_at(it->second, p.source.pixel_level0);
+    if (!found) {
       ++out.without_truth;
       continue;
     }
-    const std::uint8_t true_class = it->second.at<std::uint8_t>(y, x);
-    if (true_class >= out.per_class_points.size()) {
-      ++out.without_truth;
-      continue;
-    }
+    const std::size_t true_class = *found;
     ++out.evaluated;
     ++out.per_class_points[true_class];
     if (label.label < out.confusion.size()) ++out.confusion[true_class][label.label];

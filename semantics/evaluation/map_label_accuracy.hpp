@@ -38,6 +38,10 @@ struct MapLabelAccuracy {
   std::optional<std::pair<std::size_t, std::size_t>> commonest_mistake(std::size_t c) const;
 };
 
+// The ground-truth class at a level-0 pixel (rounded) of a label image;
+// nullopt outside the image or where the image has no class there.
+std::optional<std::size_t> true_class_at(const cv::Mat& truth, const Eigen::Vector2d& pixel);
+
 // Throws Error when a ground-truth image is not the size of the keyframe it
 // belongs to.
 MapLabelAccuracy map_label_accuracy(const Map& map, const GroundTruthLabels& truth);

@@ -17,6 +17,7 @@
 #include "semantics/evaluation/confusion_matrix.hpp"
 #include "semantics/evaluation/confusion_plot.hpp"
 #include "semantics/evaluation/facade_dataset.hpp"
+#include "semantics/evaluation/map_label_accuracy.hpp"
 #include "semantics/evaluation/corner_keypoints.hpp"
 #include "semantics/evaluation/grid_keypoints.hpp"
 #include "semantics/evaluation/label_comparison.hpp"
@@ -358,6 +359,20 @@ TEST(LabelComparison, OneRowPerDescriptorWithRecallsAndTimes) {
   EXPECT_THAT(text, HasSubstr("\"descriptor\":\"sift\""));
   EXPECT_THAT(text, HasSubstr("\"window\":0.5"));
   EXPECT_THAT(text, HasSubstr("\"extraction_ms_per_image\":2"));
+}
+
+// A map point's true class: the label image at its rounded pixel, none
+// outside the image or where the image has no class (the renderer's unknown).
+TEST(MapLabelAccuracy, TrueClassIsTheLabelAtTheRoundedPixel) {
+  cv::Mat truth(4, 6, CV_8UC1, cv::Scalar(1));
+  truth.at<std::uint8_t>(2, 3) = 7;
+  truth.at<std::uint8_t>(0, 0) = 200;
+  EXPECT_EQ(true_class_at(truth, {2.6, 1.5}), std::optional<std::size_t>(7));
+  EXPECT_EQ(true_class_at(truth, {2.4, 1.4}), std::optional<std::size_t>(1));
+  EXPECT_EQ(true_class_at(truth, {0.0, 0.0}), std::nullopt);
+  EXPECT_EQ(true_class_at(truth, {-0.6, 1.0}), std::nullopt);
+  EXPECT_EQ(true_class_at(truth, {5.6, 1.0}), std::nullopt);
+  EXPECT_EQ(true_class_at(cv::Mat(), {1.0, 1.0}), std::nullopt);
 }
 
 }  // namespace
