@@ -46,8 +46,10 @@ std::vector<render::LegendEntry> class_legend(const LabelledPointCloud& cloud) {
     for (const PointCloudClass& c : cloud.classes)
       if (c.id == label) name = c.name;
     // The colour the points are drawn in: that of the first point with the label.
+    // (A copy of the binding: clang 14 cannot capture a structured binding.)
+    const int wanted = label;
     const auto first = std::find_if(cloud.points.begin(), cloud.points.end(),
-                                    [&](const LabelledPoint& p) { return p.label == label; });
+                                    [wanted](const LabelledPoint& p) { return p.label == wanted; });
     legend.push_back({name + " (" + std::to_string(count) + ")", cv::Vec3b(first->b, first->g, first->r), false});
   }
   return legend;

@@ -14,27 +14,17 @@ endif()
 
 if(FACADESLAM_SANITIZE STREQUAL "address")
   set(_fs_san -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
-elseif(FACADESLAM_SANITIZE STREQUAL "thread")
-  set(_fs_san -fsanitize=thread -fno-omit-frame-pointer)
-elseif(FACADESLAM_SANITIZE STREQUAL "fuzzer")
-  # libFuzzer's coverage hooks in every library, ASan + UBSan to turn bad
-  # memory into findings; the fuzz targets themselves link -fsanitize=fuzzer
-  # (fuzz/CMakeLists.txt). Clang only.
-  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
-    message(FATAL_ERROR "FACADESLAM_SANITIZE=fuzzer needs clang (CMAKE_CXX_COMPILER=clang++)")
-  endif()
-  set(_fs_san -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
-elseif(NOT FACADESLAM_SANITIZE STREQUAL "")
-  message(FATAL_ERROR "FACADESLAM_SANITIZE must be empty, 'address', 'thread' or 'fuzzer', not '${FACADESLAM_SANITIZE}'")
-endif()
-if(FACADESLAM_SANITIZE STREQUAL "address" OR FACADESLAM_SANITIZE STREQUAL "fuzzer")
   # Eigen stops trusting malloc's 16-byte alignment when it sees ASan
   # (__SANITIZE_ADDRESS__) and frees through its own aligned header, while the
   # uninstrumented libceres allocates with plain malloc: a Ceres-allocated
   # matrix freed in our code (e.g. ceres::GradientChecker's results) is then a
   # bad free. Both sides must agree; ASan's malloc does return 16-byte
   # aligned blocks on x86-64, which libceres already relies on.
-  list(APPEND _fs_san_defs EIGEN_MALLOC_ALREADY_ALIGNED=1)
+  set(_fs_san_defs EIGEN_MALLOC_ALREADY_ALIGNED=1)
+elseif(FACADESLAM_SANITIZE STREQUAL "thread")
+  set(_fs_san -fsanitize=thread -fno-omit-frame-pointer)
+elseif(NOT FACADESLAM_SANITIZE STREQUAL "")
+  message(FATAL_ERROR "FACADESLAM_SANITIZE must be empty, 'address' (ASan + UBSan; with clang also the fuzz targets) or 'thread', not '${FACADESLAM_SANITIZE}'")
 endif()
 if(_fs_san)
   target_compile_definitions(facadeslam_options INTERFACE ${_fs_san_defs})

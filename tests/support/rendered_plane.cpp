@@ -16,7 +16,11 @@ RenderedPlane make_plane(int seed) {
     // Log-uniform sizes so that every pyramid level of every view has corners.
     const int w = static_cast<int>(std::exp(rng.uniform(std::log(3.0), std::log(80.0))));
     const int h = static_cast<int>(std::exp(rng.uniform(std::log(3.0), std::log(80.0))));
-    const cv::Point p(rng.uniform(-w, texture.cols), rng.uniform(-h, texture.rows));
+    // y before x: the order GCC evaluated the two arguments in when the tests'
+    // thresholds were set (the order of a call's arguments is unspecified,
+    // and clang's gave another texture).
+    const int y = rng.uniform(-h, texture.rows);
+    const cv::Point p(rng.uniform(-w, texture.cols), y);
     cv::rectangle(texture, cv::Rect(p, cv::Size(w, h)), cv::Scalar(rng.uniform(20, 236)), cv::FILLED);
   }
   cv::GaussianBlur(texture, plane.texture, cv::Size(0, 0), 1.0);
