@@ -30,14 +30,14 @@ std::vector<double> camera_parameters(const Camera& camera) {
 }
 
 Camera make_camera(const std::string& model, int width, int height, const std::vector<double>& p,
-                   BinaryReader& in) {
+                   ByteReader& in) {
   if (model == "pinhole" && p.size() == 9)
     return Camera(width, height, PinholeRadTan{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]});
   if (model == "atan" && p.size() == 5) return Camera(width, height, AtanCamera{p[0], p[1], p[2], p[3], p[4]});
-  in.corrupt("unknown camera model '" + model + "' with " + std::to_string(p.size()) + " parameters");
+  in.fail("unknown camera model '" + model + "' with " + std::to_string(p.size()) + " parameters");
 }
 
-void put_pose(BinaryWriter& out, const SE3d& T) {
+void put_pose(ByteWriter& out, const SE3d& T) {
   double params[kSe3ParamSize];
   se3_to_params(T, params);
   for (double v : params) out.put(v);
@@ -45,33 +45,33 @@ void put_pose(BinaryWriter& out, const SE3d& T) {
 
 // A double that must be finite (NaN poses and infinite points would load
 // and fail far from the file otherwise).
-double get_finite(BinaryReader& in, const char* what) {
+double get_finite(ByteReader& in, const char* what) {
   const double v = in.get<double>(what);
-  if (!std::isfinite(v)) in.corrupt(std::string(what) + " is not a finite number");
+  if (!std::isfinite(v)) in.fail(std::string(what) + " is not a finite number");
   return v;
 }
 
-SE3d get_pose(BinaryReader& in) {
+SE3d get_pose(ByteReader& in) {
   double params[kSe3ParamSize];
   for (double& v : params) v = get_finite(in, "keyframe pose");
   return se3_from_params(params);
 }
 
-void put_vec(BinaryWriter& out, const Eigen::Vector3d& v) {
+void put_vec(ByteWriter& out, const Eigen::Vector3d& v) {
   for (int i = 0; i < 3; ++i) out.put(v[i]);
 }
 
-Eigen::Vector3d get_vec(BinaryReader& in, const char* what) {
+Eigen::Vector3d get_vec(ByteReader& in, const char* what) {
   Eigen::Vector3d v;
   for (int i = 0; i < 3; ++i) v[i] = get_finite(in, what);
   return v;
 }
 
-ClassVotes get_votes(BinaryReader& in) {
+ClassVotes get_votes(ByteReader& in) {
   ClassVotes votes{};
   for (float& v : votes) {
     v = in.get<float>("point votes");
-    if (!std::isfinite(v) || v < 0.f) in.corrupt("point votes must be finite and non-negative");
+    if (!std::isfinite(v) || v < 0.f) in.fail("point votes must be finite and non-negative");
   }
   return votes;
 }
@@ -80,21 +80,21 @@ ClassVotes get_votes(BinaryReader& in) {
 // the rest is spread evenly over the other classes: the label and confidence
 // come out as they were (a winner's share is always above 1/9) and new votes
 // fuse with them as with one earlier observation.
-ClassVotes votes_from_version2_label(BinaryReader& in) {
+ClassVotes votes_from_version2_label(ByteReader& in) {
   const auto label = in.get<std::uint8_t>("point label");
   const auto confidence = in.get<float>("point label");
   ClassVotes votes{};
   if (label == kUnlabelled) return votes;
-  if (label >= votes.size() || !(confidence > 0.f && confidence <= 1.f)) in.corrupt("point label out of range");
+  if (label >= votes.size() || !(confidence > 0.f && confidence <= 1.f)) in.fail("point label out of range");
   const float rest = (1.f - confidence) / static_cast<float>(votes.size() - 1);
   for (std::size_t c = 0; c < votes.size(); ++c) votes[c] = c == label ? confidence : rest;
   return votes;
 }
 
-void put_pyramid(BinaryWriter& out, const ImagePyramid& pyramid) {
+void put_pyramid(ByteWriter& out, const ImagePyramid& pyramid) {
   for (int l = 0; l < kPyramidLevels; ++l) {
     const auto& level = pyramid.level(l);
-    out.put_mat(level.image);
+    put_mat(out, level.image);
     out.put(static_cast<std::uint32_t>(level.corners.size()));
     for (const auto& c : level.corners) {
       out.put(static_cast<std::int32_t>(c.x));
@@ -104,13 +104,13 @@ void put_pyramid(BinaryWriter& out, const ImagePyramid& pyramid) {
   }
 }
 
-std::shared_ptr<const ImagePyramid> get_pyramid(BinaryReader& in) {
+std::shared_ptr<const ImagePyramid> get_pyramid(ByteReader& in) {
   std::array<PyramidLevel, kPyramidLevels> levels;
   for (auto& level : levels) {
-    level.image = in.get_mat("pyramid image");
-    if (level.image.type() != CV_8UC1) in.corrupt("pyramid level is not an 8-bit grey image");
+    level.image = get_mat(in, "pyramid image");
+    if (level.image.type() != CV_8UC1) in.fail("pyramid level is not an 8-bit grey image");
     const auto n = in.get<std::uint32_t>("corner count");
-    if (n > in.remaining() / 12) in.corrupt("corner count larger than the file");
+    if (n > in.remaining() / 12) in.fail("corner count larger than the file");
     level.corners.resize(n);
     for (auto& c : level.corners) {
       c.x = in.get<std::int32_t>("corner");
@@ -122,7 +122,7 @@ std::shared_ptr<const ImagePyramid> get_pyramid(BinaryReader& in) {
 }
 
 // Colour images are stored PNG-compressed (lossless): raw they would dominate the file.
-void put_colour(BinaryWriter& out, const cv::Mat& colour) {
+void put_colour(ByteWriter& out, const cv::Mat& colour) {
   std::vector<std::uint8_t> png;
   if (!colour.empty() && !cv::imencode(".png", colour, png, {cv::IMWRITE_PNG_COMPRESSION, 1}))
     throw Error("map save: cannot encode a keyframe colour image");
@@ -130,14 +130,14 @@ void put_colour(BinaryWriter& out, const cv::Mat& colour) {
   out.put_bytes(png.data(), png.size());
 }
 
-cv::Mat get_colour(BinaryReader& in) {
+cv::Mat get_colour(ByteReader& in) {
   const auto size = in.get<std::uint32_t>("colour image size");
   if (size == 0) return {};
-  if (size > in.remaining()) in.corrupt("colour image larger than the file");
+  if (size > in.remaining()) in.fail("colour image larger than the file");
   std::vector<std::uint8_t> png(size);
   in.get_bytes(png.data(), size, "colour image");
   cv::Mat colour = cv::imdecode(png, cv::IMREAD_UNCHANGED);
-  if (colour.empty()) in.corrupt("a keyframe colour image does not decode");
+  if (colour.empty()) in.fail("a keyframe colour image does not decode");
   return colour;
 }
 
@@ -163,11 +163,11 @@ bool same_camera(const Camera& a, const Camera& b) {
 }
 
 void save_map(const std::filesystem::path& path, const Map& map, const Camera& camera) {
-  BinaryWriter out;
+  ByteWriter out;
   out.put_bytes(kMagic, sizeof kMagic);
   out.put(kMapFormatVersion);
 
-  out.put_string(camera.model_name());
+  out.put_text(camera.model_name());
   out.put(static_cast<std::int32_t>(camera.width()));
   out.put(static_cast<std::int32_t>(camera.height()));
   const auto params = camera_parameters(camera);
@@ -214,9 +214,9 @@ void save_map(const std::filesystem::path& path, const Map& map, const Camera& c
       out.put(static_cast<std::uint8_t>(p->is_bad()));
     }
   });
-  const std::uint64_t checksum = fnv1a64(out.buffer().data(), out.buffer().size());
+  const std::uint64_t checksum = fnv1a64(out.bytes().data(), out.bytes().size());
   out.put(checksum);
-  write_text_atomically(path, out.buffer());
+  write_text_atomically(path, out.bytes());
 }
 
 Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expected_camera) {
@@ -224,7 +224,7 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   std::ifstream file(path, std::ios::binary);
   if (!file) fail_file(path, "cannot open the map file");
   std::string data((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  BinaryReader in(data, path);
+  ByteReader in(data, path, "corrupt map file");
 
   char magic[sizeof kMagic];
   if (data.size() < sizeof kMagic + 4 + 8) fail_file(path, "not a facadeslam map file (too short)");
@@ -237,13 +237,13 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   std::uint64_t stored_checksum = 0;
   std::memcpy(&stored_checksum, data.data() + data.size() - 8, 8);
   if (fnv1a64(data.data(), data.size() - 8) != stored_checksum)
-    fail_file(path, "corrupt map file (checksum mismatch; truncated or damaged)");
+    fail_file(path, "corrupt map file: checksum mismatch (truncated or damaged)");
 
-  const std::string model = in.get_string("camera model");
+  const std::string model = in.text("camera model");
   const auto width = in.get<std::int32_t>("camera width");
   const auto height = in.get<std::int32_t>("camera height");
   const auto n_params = in.get<std::uint32_t>("camera parameters");
-  if (n_params > 16) in.corrupt("too many camera parameters");
+  if (n_params > 16) in.fail("too many camera parameters");
   std::vector<double> params(n_params);
   for (double& v : params) v = in.get<double>("camera parameters");
   Camera camera = make_camera(model, width, height, params, in);
@@ -260,30 +260,30 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   const auto n_kf = in.get<std::uint32_t>("keyframe count");
   for (std::uint32_t k = 0; k < n_kf; ++k) {
     const auto id = in.get<std::uint64_t>("keyframe id");
-    if (pyramids.count(id)) in.corrupt("keyframe id " + std::to_string(id) + " appears twice");
+    if (pyramids.count(id)) in.fail("keyframe id " + std::to_string(id) + " appears twice");
     const auto frame_index = in.get<std::uint64_t>("keyframe frame index");
     const double timestamp = get_finite(in, "keyframe timestamp");
     const SE3d T_c_w = get_pose(in);
     const double mean_depth = get_finite(in, "keyframe depth stats");
     const double depth_sigma = get_finite(in, "keyframe depth stats");
-    if (mean_depth <= 0.0 || depth_sigma < 0.0) in.corrupt("keyframe " + std::to_string(id) + " depth stats out of range");
+    if (mean_depth <= 0.0 || depth_sigma < 0.0) in.fail("keyframe " + std::to_string(id) + " depth stats out of range");
     auto pyramid = get_pyramid(in);
     cv::Mat colour = get_colour(in);
     const auto n_meas = in.get<std::uint32_t>("measurement count");
-    if (n_meas > in.remaining() / 29) in.corrupt("measurement count larger than the file");
+    if (n_meas > in.remaining() / 29) in.fail("measurement count larger than the file");
     Measurements measurements;
     for (std::uint32_t i = 0; i < n_meas; ++i) {
       const auto point_id = in.get<std::uint64_t>("measurement");
       Measurement m;
       m.level = in.get<std::int32_t>("measurement");
       if (m.level < 0 || m.level >= kPyramidLevels)
-        in.corrupt("measurement level " + std::to_string(m.level) + " in keyframe " + std::to_string(id) +
+        in.fail("measurement level " + std::to_string(m.level) + " in keyframe " + std::to_string(id) +
                    " (expected 0.." + std::to_string(kPyramidLevels - 1) + ")");
       m.pixel.x() = get_finite(in, "measurement pixel");
       m.pixel.y() = get_finite(in, "measurement pixel");
       m.from_source = in.get<std::uint8_t>("measurement") != 0;
       if (!measurements.emplace(point_id, m).second)
-        in.corrupt("keyframe " + std::to_string(id) + " measures point " + std::to_string(point_id) + " twice");
+        in.fail("keyframe " + std::to_string(id) + " measures point " + std::to_string(point_id) + " twice");
     }
     auto kf = std::make_shared<KeyFrame>(
         id, Frame{static_cast<std::size_t>(frame_index), timestamp, colour, {}, pyramid}, T_c_w, std::move(measurements));
@@ -297,15 +297,15 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   const auto n_points = in.get<std::uint32_t>("point count");
   for (std::uint32_t i = 0; i < n_points; ++i) {
     const auto id = in.get<std::uint64_t>("point id");
-    if (!point_ids.insert(id).second) in.corrupt("point id " + std::to_string(id) + " appears twice");
+    if (!point_ids.insert(id).second) in.fail("point id " + std::to_string(id) + " appears twice");
     PatchSource source;
     source.keyframe_id = in.get<std::uint64_t>("point source");
     source.level = in.get<std::int32_t>("point source");
     source.pixel_level0.x() = get_finite(in, "point source pixel");
     source.pixel_level0.y() = get_finite(in, "point source pixel");
     const auto it = pyramids.find(source.keyframe_id);
-    if (it == pyramids.end()) in.corrupt("point " + std::to_string(id) + " refers to a missing keyframe");
-    if (source.level < 0 || source.level >= kPyramidLevels) in.corrupt("point level out of range");
+    if (it == pyramids.end()) in.fail("point " + std::to_string(id) + " refers to a missing keyframe");
+    if (source.level < 0 || source.level >= kPyramidLevels) in.fail("point level out of range");
     source.pyramid = it->second;
     PointGeometry g;
     g.p_w = get_vec(in, "point geometry");
@@ -317,17 +317,17 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     if (in.get<std::uint8_t>("point flags")) bad.push_back(point);
     points.push_back(std::move(point));
   }
-  if (in.remaining() != 8) in.corrupt("unexpected data after the points");
+  if (in.remaining() != 8) in.fail("unexpected data after the points");
   for (const auto& kf : keyframes)
     for (const auto& [point_id, m] : kf->measurements())
       if (!point_ids.count(point_id))
-        in.corrupt("keyframe " + std::to_string(kf->id()) + " measures point " + std::to_string(point_id) +
+        in.fail("keyframe " + std::to_string(kf->id()) + " measures point " + std::to_string(point_id) +
                    ", which the map does not have");
   // Ids handed out after loading must not repeat the loaded ones.
   for (const auto& kf : keyframes)
-    if (kf->id() >= next_kf) in.corrupt("keyframe id " + std::to_string(kf->id()) + " is not below the id counter");
+    if (kf->id() >= next_kf) in.fail("keyframe id " + std::to_string(kf->id()) + " is not below the id counter");
   for (const MapPoint::Id id : point_ids)
-    if (id >= next_point) in.corrupt("point id " + std::to_string(id) + " is not below the id counter");
+    if (id >= next_point) in.fail("point id " + std::to_string(id) + " is not below the id counter");
 
   map.add(keyframes, points);
   map.update([&](MapEditor& edit) {

@@ -1,21 +1,18 @@
 #include "core/map/point_cloud_reader.hpp"
 
-#include <bit>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 
+#include "core/util/byte_stream.hpp"
 #include "core/util/error.hpp"
 
 namespace facadeslam {
 // Named, so that the unity build's other files in this library cannot clash with these helpers.
 namespace ply_reader {
 namespace {
-
-static_assert(std::endian::native == std::endian::little,
-              "the PLY body is read with memcpy, which assumes a little-endian host like the writer");
 
 // Every complaint says what a map.ply is, so that a user who passed the
 // wrong file sees at once what the command wanted.
@@ -110,13 +107,6 @@ Header parse_header(const std::filesystem::path& path, const std::string& data) 
   return header;
 }
 
-template <class T>
-T load(const char* bytes) {
-  T value;
-  std::memcpy(&value, bytes, sizeof(T));
-  return value;
-}
-
 }  // namespace
 }  // namespace ply_reader
 
@@ -133,15 +123,16 @@ LabelledPointCloud read_labelled_point_cloud(const std::filesystem::path& ply_pa
   LabelledPointCloud cloud;
   cloud.classes = std::move(header.classes);
   cloud.points.resize(header.vertices);
-  const char* at = data.data() + header.body_offset;
-  for (std::size_t i = 0; i < header.vertices; ++i, at += kVertexBytes) {
+  // The body's size was checked above: the reader cannot run short.
+  ByteReader in(std::string_view(data).substr(header.body_offset), ply_path, "damaged PLY body");
+  for (std::size_t i = 0; i < header.vertices; ++i) {
     LabelledPoint& p = cloud.points[i];
-    p.p_w = {load<float>(at), load<float>(at + 4), load<float>(at + 8)};
-    p.r = load<std::uint8_t>(at + 12);
-    p.g = load<std::uint8_t>(at + 13);
-    p.b = load<std::uint8_t>(at + 14);
-    p.label = load<std::uint8_t>(at + 15);
-    p.confidence = load<float>(at + 16);
+    for (int k = 0; k < 3; ++k) p.p_w[k] = in.get<float>("a vertex");
+    p.r = in.get<std::uint8_t>("a vertex");
+    p.g = in.get<std::uint8_t>("a vertex");
+    p.b = in.get<std::uint8_t>("a vertex");
+    p.label = in.get<std::uint8_t>("a vertex");
+    p.confidence = in.get<float>("a vertex");
     if (!p.p_w.allFinite()) fail(ply_path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
   }
   return cloud;

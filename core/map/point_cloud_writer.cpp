@@ -1,24 +1,14 @@
 #include "core/map/point_cloud_writer.hpp"
 
-#include <cstring>
 #include <map>
 #include <sstream>
 
 #include "core/map/semantic_classes.hpp"
 #include "core/util/atomic_write.hpp"
+#include "core/util/byte_stream.hpp"
 #include "core/util/json.hpp"
 
 namespace facadeslam {
-namespace {
-
-template <class T>
-void append(std::string& out, T value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-
-}  // namespace
 
 std::size_t write_labelled_point_cloud(const std::filesystem::path& ply_path, const Map& map) {
   struct Vertex {
@@ -41,19 +31,21 @@ std::size_t write_labelled_point_cloud(const std::filesystem::path& ply_path, co
          << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
          << "property uchar label\nproperty float confidence\nend_header\n";
 
-  std::string data = header.str();
+  ByteWriter data;
+  const std::string header_text = header.str();
+  data.put_bytes(header_text.data(), header_text.size());
   std::map<std::uint8_t, std::size_t> counts;
   for (const auto& v : vertices) {
     const SemanticClass& c = semantic_class(v.label.label);
-    for (int i = 0; i < 3; ++i) append(data, v.p[i]);
-    append(data, c.r);
-    append(data, c.g);
-    append(data, c.b);
-    append(data, v.label.label);
-    append(data, v.label.confidence);
+    for (int i = 0; i < 3; ++i) data.put(v.p[i]);
+    data.put(c.r);
+    data.put(c.g);
+    data.put(c.b);
+    data.put(v.label.label);
+    data.put(v.label.confidence);
     ++counts[c.id];
   }
-  write_text_atomically(ply_path, data);
+  write_text_atomically(ply_path, data.bytes());
 
   Json classes = Json::array();
   auto add_class = [&](const SemanticClass& c) {

@@ -10,8 +10,8 @@
 #include <system_error>
 
 #include "core/util/atomic_write.hpp"
+#include "core/util/byte_stream.hpp"
 #include "core/util/error.hpp"
-#include "semantics/forest/byte_buffer.hpp"
 #include "semantics/forest/zlib_codec.hpp"
 #include "semantics/text.hpp"
 
@@ -57,11 +57,11 @@ std::vector<unsigned char> encode_payload(const ForestModel& model) {
     if (nodes[i].var >= 0) w.put(static_cast<std::uint32_t>(static_cast<std::size_t>(nodes[i].low) - i));
   for (std::size_t i = 0; i < nodes.size(); ++i)
     if (nodes[i].var >= 0) w.put(static_cast<std::uint32_t>(static_cast<std::size_t>(nodes[i].high) - i));
-  return w.bytes();
+  return {w.bytes().begin(), w.bytes().end()};
 }
 
 ForestModel decode_payload(const std::vector<unsigned char>& payload, const std::filesystem::path& path) {
-  ByteReader r(payload, path);
+  ByteReader r({reinterpret_cast<const char*>(payload.data()), payload.size()}, path, "damaged model file");
   ForestModel model;
   model.descriptor = r.text("the descriptor name", 64);
   model.genome = Genome::parse(r.text("the genome", 1024), cat(path.string(), " (genome)"));
@@ -108,18 +108,6 @@ ForestModel decode_payload(const std::vector<unsigned char>& payload, const std:
   return model;
 }
 
-template <typename T>
-void put_raw(std::ostream& out, T value) {
-  out.write(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <typename T>
-T get_raw(const std::vector<unsigned char>& bytes, std::size_t at) {
-  T value;
-  std::memcpy(&value, bytes.data() + at, sizeof value);
-  return value;
-}
-
 std::vector<unsigned char> read_all(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
@@ -144,14 +132,16 @@ void write_fsmodel(const std::filesystem::path& path, const ForestModel& model) 
   } catch (const Error& e) {
     fail_file(path, e.what());
   }
+  ByteWriter header;
+  header.put_bytes(kMagic.data(), kMagic.size());
+  header.put(static_cast<std::uint32_t>(kFsmodelVersion));
+  header.put(static_cast<std::uint64_t>(payload.size()));
+  header.put(crc32_of(payload));
+  header.put(static_cast<std::uint64_t>(compressed.size()));
   write_atomically(
       path,
       [&](std::ostream& out) {
-        out.write(kMagic.data(), kMagic.size());
-        put_raw(out, static_cast<std::uint32_t>(kFsmodelVersion));
-        put_raw(out, static_cast<std::uint64_t>(payload.size()));
-        put_raw(out, crc32_of(payload));
-        put_raw(out, static_cast<std::uint64_t>(compressed.size()));
+        out.write(header.bytes().data(), static_cast<std::streamsize>(header.bytes().size()));
         out.write(reinterpret_cast<const char*>(compressed.data()), static_cast<std::streamsize>(compressed.size()));
       },
       true);
@@ -162,13 +152,15 @@ ForestModel read_fsmodel(const std::filesystem::path& path) {
   if (file.size() < kHeaderBytes || !std::equal(kMagic.begin(), kMagic.end(), file.begin()))
     fail_file(path, cat("not a facadeslam model file (expected a .fsmodel file starting with \"FSMODEL\", ",
                         "written by `facadeslam train`)"));
-  const auto version = get_raw<std::uint32_t>(file, 8);
+  ByteReader header({reinterpret_cast<const char*>(file.data()), kHeaderBytes}, path, "damaged model file");
+  header.take(kMagic.size(), "the magic");
+  const auto version = header.get<std::uint32_t>("the format version");
   if (version != kFsmodelVersion)
     fail_file(path, cat("model format version ", version, ", expected ", kFsmodelVersion,
                         " (retrain it with this facadeslam: `facadeslam train`)"));
-  const auto size = get_raw<std::uint64_t>(file, 12);
-  const auto crc = get_raw<std::uint32_t>(file, 20);
-  const auto compressed_size = get_raw<std::uint64_t>(file, 24);
+  const auto size = header.get<std::uint64_t>("the payload size");
+  const auto crc = header.get<std::uint32_t>("the checksum");
+  const auto compressed_size = header.get<std::uint64_t>("the compressed size");
   if (compressed_size != file.size() - kHeaderBytes)
     fail_file(path, cat("truncated or damaged model file: the header announces ", compressed_size,
                         " compressed bytes, the file holds ", file.size() - kHeaderBytes));
