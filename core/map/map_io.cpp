@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <fstream>
 #include <tuple>
@@ -109,9 +110,7 @@ std::shared_ptr<const ImagePyramid> get_pyramid(ByteReader& in) {
   for (auto& level : levels) {
     level.image = get_mat(in, "pyramid image");
     if (level.image.type() != CV_8UC1) in.fail("pyramid level is not an 8-bit grey image");
-    const auto n = in.get<std::uint32_t>("corner count");
-    if (n > in.remaining() / 12) in.fail("corner count larger than the file");
-    level.corners.resize(n);
+    level.corners.resize(in.count("corner count", 12));
     for (auto& c : level.corners) {
       c.x = in.get<std::int32_t>("corner");
       c.y = in.get<std::int32_t>("corner");
@@ -234,17 +233,15 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   if (version < kOldestMapFormatVersion || version > kMapFormatVersion)
     fail_file(path, "map format version " + std::to_string(version) + ", this build reads versions " +
                         std::to_string(kOldestMapFormatVersion) + " to " + std::to_string(kMapFormatVersion));
-  std::uint64_t stored_checksum = 0;
-  std::memcpy(&stored_checksum, data.data() + data.size() - 8, 8);
+  const auto stored_checksum =
+      ByteReader(std::string_view(data).substr(data.size() - 8), path, "corrupt map file").get<std::uint64_t>("checksum");
   if (fnv1a64(data.data(), data.size() - 8) != stored_checksum)
     fail_file(path, "corrupt map file: checksum mismatch (truncated or damaged)");
 
   const std::string model = in.text("camera model");
   const auto width = in.get<std::int32_t>("camera width");
   const auto height = in.get<std::int32_t>("camera height");
-  const auto n_params = in.get<std::uint32_t>("camera parameters");
-  if (n_params > 16) in.fail("too many camera parameters");
-  std::vector<double> params(n_params);
+  std::vector<double> params(in.count("camera parameters", 8, 16));
   for (double& v : params) v = in.get<double>("camera parameters");
   Camera camera = make_camera(model, width, height, params, in);
   if (expected_camera && !same_camera(camera, *expected_camera))
@@ -269,10 +266,9 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     if (mean_depth <= 0.0 || depth_sigma < 0.0) in.fail("keyframe " + std::to_string(id) + " depth stats out of range");
     auto pyramid = get_pyramid(in);
     cv::Mat colour = get_colour(in);
-    const auto n_meas = in.get<std::uint32_t>("measurement count");
-    if (n_meas > in.remaining() / 29) in.fail("measurement count larger than the file");
+    const std::size_t n_meas = in.count("measurement count", 29);
     Measurements measurements;
-    for (std::uint32_t i = 0; i < n_meas; ++i) {
+    for (std::size_t i = 0; i < n_meas; ++i) {
       const auto point_id = in.get<std::uint64_t>("measurement");
       Measurement m;
       m.level = in.get<std::int32_t>("measurement");

@@ -18,7 +18,7 @@ const char* ByteReader::take(std::size_t size, const char* what) {
   return p;
 }
 
-std::size_t ByteReader::count(const char* what, std::size_t max, std::size_t item_bytes) {
+std::size_t ByteReader::count(const char* what, std::size_t item_bytes, std::size_t max) {
   const std::size_t n = get<std::uint32_t>(what);
   if (n > max) fail(std::string(what) + " is " + std::to_string(n) + ", expected at most " + std::to_string(max));
   if (item_bytes > 0 && n > remaining() / item_bytes)
@@ -28,7 +28,7 @@ std::size_t ByteReader::count(const char* what, std::size_t max, std::size_t ite
 }
 
 std::string ByteReader::text(const char* what, std::size_t max) {
-  const std::size_t n = count(what, max, 1);
+  const std::size_t n = count(what, 1, max);
   return std::string(take(n, what), n);
 }
 

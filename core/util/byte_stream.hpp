@@ -54,9 +54,10 @@ class ByteReader {
   // The next `size` bytes, or a failure naming `what` if fewer are left.
   const char* take(std::size_t size, const char* what);
   // A 32-bit count of items that follow, each at least `item_bytes` long.
-  // Bounded by `max` and by the bytes left, so that a damaged count fails
+  // Bounded by the bytes left and by `max`, so that a damaged count fails
   // here rather than as a huge allocation.
-  std::size_t count(const char* what, std::size_t max, std::size_t item_bytes);
+  std::size_t count(const char* what, std::size_t item_bytes,
+                    std::size_t max = std::numeric_limits<std::uint32_t>::max());
   // put_text's text, at most `max` characters.
   std::string text(const char* what, std::size_t max = std::numeric_limits<std::uint32_t>::max());
 

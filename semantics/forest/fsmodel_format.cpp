@@ -65,7 +65,7 @@ ForestModel decode_payload(const std::vector<unsigned char>& payload, const std:
   ForestModel model;
   model.descriptor = r.text("the descriptor name", 64);
   model.genome = Genome::parse(r.text("the genome", 1024), cat(path.string(), " (genome)"));
-  const std::size_t class_count = r.count("the class count", kMaxItems, 11);
+  const std::size_t class_count = r.count("the class count", 11, kMaxItems);
   for (std::size_t k = 0; k < class_count; ++k) {
     ClassEntry c;
     c.id = r.get<std::int32_t>("a class id");
@@ -80,11 +80,11 @@ ForestModel decode_payload(const std::vector<unsigned char>& payload, const std:
   model.params.seed = r.get<std::uint64_t>("the forest settings");
 
   const int width = r.get<std::int32_t>("the descriptor width");
-  std::vector<int> classes(r.count("the forest's class count", kMaxItems, 4));
+  std::vector<int> classes(r.count("the forest's class count", 4, kMaxItems));
   for (int& id : classes) id = r.get<std::int32_t>("the forest's class ids");
-  std::vector<int> roots(r.count("the tree count", kMaxItems, 4));
+  std::vector<int> roots(r.count("the tree count", 4, kMaxItems));
   for (int& root : roots) root = r.get<std::int32_t>("the tree roots");
-  std::vector<RandomForest::Node> nodes(r.count("the node count", kMaxNodes, 2));
+  std::vector<RandomForest::Node> nodes(r.count("the node count", 2, kMaxNodes));
   std::vector<std::size_t> splits;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const int v = r.get<std::int16_t>("the node variables");

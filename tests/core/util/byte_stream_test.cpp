@@ -58,14 +58,14 @@ TEST(ByteStream, ACountIsBoundedByItsMaximumAndByTheBytesLeft) {
   w.put_bytes("abcdefgh", 8);
   {
     ByteReader r(w.bytes(), "n.bin", "damaged test file");
-    EXPECT_THAT(failure_of([&] { r.count("the node count", 4, 1); }), HasSubstr("expected at most 4"));
+    EXPECT_THAT(failure_of([&] { r.count("the node count", 1, 4); }), HasSubstr("expected at most 4"));
   }
   {
     ByteReader r(w.bytes(), "n.bin", "damaged test file");
-    EXPECT_THAT(failure_of([&] { r.count("the node count", 100, 2); }), HasSubstr("only 8 bytes follow"));
+    EXPECT_THAT(failure_of([&] { r.count("the node count", 2, 100); }), HasSubstr("only 8 bytes follow"));
   }
   ByteReader r(w.bytes(), "n.bin", "damaged test file");
-  EXPECT_EQ(r.count("the node count", 100, 1), 5u);
+  EXPECT_EQ(r.count("the node count", 1, 100), 5u);
 }
 
 TEST(ByteStream, TextLongerThanAllowedIsRejected) {
