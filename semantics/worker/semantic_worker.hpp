@@ -10,7 +10,8 @@
 //
 // Two ways to run it, as the map maker: a thread (start/stop) waiting on the
 // queue, or process_pending() called inline after the map maker (--sync),
-// which makes runs bit-reproducible.
+// which makes runs bit-reproducible. The thread runs at the lowest CPU
+// priority: where the cores are busy it yields them to the tracker.
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -70,6 +71,7 @@ class SemanticWorker {
 
  private:
   void run();
+  static constexpr int kWorkerNice = 19;  // see run()
 
   // A forest and the descriptor it was trained on.
   struct Classifier {
