@@ -6,6 +6,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/support/random_rectangles.hpp"
+
 namespace facadeslam::bench {
 
 cv::Mat facade_image(cv::Size size, std::string* source) {
@@ -21,11 +23,7 @@ cv::Mat facade_image(cv::Size size, std::string* source) {
   image.create(size, CV_8UC3);
   cv::RNG rng(12345);
   rng.fill(image, cv::RNG::UNIFORM, cv::Scalar::all(90), cv::Scalar::all(160));
-  for (int i = 0; i < 400; ++i) {
-    const cv::Point p(rng.uniform(0, size.width), rng.uniform(0, size.height));
-    cv::rectangle(image, cv::Rect(p, cv::Size(rng.uniform(4, 40), rng.uniform(4, 40))),
-                  cv::Scalar(rng.uniform(0, 255), rng.uniform(0, 255), rng.uniform(0, 255)), cv::FILLED);
-  }
+  test::paint_random_rectangles(image, rng, 400, 0, 4, 40);
   cv::GaussianBlur(image, image, cv::Size(3, 3), 0.8);
   if (source) *source = "synthetic texture";
   return image;

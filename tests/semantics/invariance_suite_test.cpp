@@ -69,10 +69,14 @@ cv::Mat colour_ramp(cv::Size size) {
   cv::Mat image(size, CV_8UC3);
   cv::RNG rng(3);
   for (int y = 0; y < size.height; ++y)
-    for (int x = 0; x < size.width; ++x)
-      image.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(170 - x / 2 + rng.uniform(0, 3)),
-                                            cv::saturate_cast<uchar>(60 + 1.3 * y + rng.uniform(0, 3)),
-                                            cv::saturate_cast<uchar>(60 + x + rng.uniform(0, 3)));
+    for (int x = 0; x < size.width; ++x) {
+      const int blue_noise = rng.uniform(0, 3);  // one draw a statement: in order
+      const int green_noise = rng.uniform(0, 3);
+      const int red_noise = rng.uniform(0, 3);
+      image.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(170 - x / 2 + blue_noise),
+                                            cv::saturate_cast<uchar>(60 + 1.3 * y + green_noise),
+                                            cv::saturate_cast<uchar>(60 + x + red_noise));
+    }
   return image;
 }
 

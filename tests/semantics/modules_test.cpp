@@ -222,7 +222,11 @@ TEST(EdgeDistance, EqualsBruteForceOnScatteredEdges) {
   // Sparse random edges: empty columns, far and near pixels, image borders.
   cv::Mat edges = cv::Mat::zeros(37, 83, CV_8U);
   cv::RNG rng(7);
-  for (int i = 0; i < 25; ++i) edges.at<uchar>(rng.uniform(0, edges.rows), rng.uniform(0, edges.cols / 2)) = 255;
+  for (int i = 0; i < 25; ++i) {
+    const int row = rng.uniform(0, edges.rows);  // one draw a statement: in order
+    const int column = rng.uniform(0, edges.cols / 2);
+    edges.at<uchar>(row, column) = 255;
+  }
   cv::Mat distance(edges.size(), CV_32F);
   distance_to_edges(edges, distance);
   std::vector<cv::Point> points;

@@ -11,6 +11,7 @@
 #include "semantics/descriptor/module_layout.hpp"
 #include "semantics/descriptor/padded_plane.hpp"
 #include "semantics/descriptor/prepared_image.hpp"
+#include "tests/support/random_rectangles.hpp"
 
 namespace facadeslam::semantics::test_util {
 
@@ -48,11 +49,7 @@ inline cv::Mat textured_image(cv::Size size, unsigned seed = 1) {
     for (int x = 0; x < size.width; ++x)
       image.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<uchar>(40 + (x * 3) % 160), static_cast<uchar>(60 + (y * 2) % 150),
                                             static_cast<uchar>(90 + ((x + y) % 120)));
-  for (int i = 0; i < 60; ++i) {
-    const cv::Point p(rng.uniform(0, size.width), rng.uniform(0, size.height));
-    cv::rectangle(image, cv::Rect(p, cv::Size(rng.uniform(3, 30), rng.uniform(3, 30))),
-                  cv::Scalar(rng.uniform(0, 255), rng.uniform(0, 255), rng.uniform(0, 255)), cv::FILLED);
-  }
+  test::paint_random_rectangles(image, rng, 60, 0, 3, 30);
   cv::Mat noise(size, CV_8UC3);
   rng.fill(noise, cv::RNG::UNIFORM, cv::Scalar::all(0), cv::Scalar::all(12));
   cv::add(image, noise, image);

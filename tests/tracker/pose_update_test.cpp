@@ -26,7 +26,10 @@ std::vector<PoseMeasurement> exact_measurements(const SE3d& T_c_w, const Camera&
   std::vector<PoseMeasurement> m;
   const SE3d T_w_c = T_c_w.inverse();
   while (static_cast<int>(m.size()) < n) {
-    const Eigen::Vector2d px(rng.uniform(20.0, camera.width() - 20.0), rng.uniform(20.0, camera.height() - 20.0));
+    // One draw a statement: a call's arguments are evaluated in the compiler's order.
+    const double u = rng.uniform(20.0, camera.width() - 20.0);
+    const double v = rng.uniform(20.0, camera.height() - 20.0);
+    const Eigen::Vector2d px(u, v);
     const Eigen::Vector3d p_c = camera.unproject(px) * rng.uniform(2.0, 6.0);
     PoseMeasurement meas;
     meas.p_w = T_w_c * p_c;
@@ -100,8 +103,11 @@ TEST(PoseUpdate, NoisyMeasurementsGiveAConsistentScaleAndCovariance) {
   auto m = exact_measurements(truth, camera, 1000);
   cv::RNG rng(9);
   const double sigma_px = 1.0;  // per axis, in level pixels
-  for (auto& meas : m) meas.pixel += Eigen::Vector2d(rng.gaussian(sigma_px), rng.gaussian(sigma_px)) *
-                                     ImagePyramid::level_scale(meas.level);
+  for (auto& meas : m) {
+    const double du = rng.gaussian(sigma_px);
+    const double dv = rng.gaussian(sigma_px);
+    meas.pixel += Eigen::Vector2d(du, dv) * ImagePyramid::level_scale(meas.level);
+  }
   const PoseUpdateResult r = update_pose(perturbed(truth), m, camera);
   ASSERT_TRUE(r.ok);
   // The scale estimate recovers sigma^2 = 1 level-pixel^2.

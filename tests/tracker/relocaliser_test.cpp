@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/support/random_rectangles.hpp"
+
 namespace facadeslam {
 namespace {
 
@@ -15,11 +17,7 @@ Camera test_camera() { return Camera(640, 480, PinholeRadTan{500, 500, 319.5, 23
 cv::Mat random_scene(int seed) {
   cv::Mat img(480, 640, CV_8UC3, cv::Scalar(110, 120, 130));
   cv::RNG rng(static_cast<std::uint64_t>(seed));
-  for (int i = 0; i < 250; ++i) {
-    const cv::Point p(rng.uniform(-40, 640), rng.uniform(-40, 480));
-    cv::rectangle(img, cv::Rect(p, cv::Size(rng.uniform(10, 90), rng.uniform(10, 90))),
-                  cv::Scalar(rng.uniform(0, 255), rng.uniform(0, 255), rng.uniform(0, 255)), cv::FILLED);
-  }
+  test::paint_random_rectangles(img, rng, 250, -40, 10, 90);
   return img;
 }
 

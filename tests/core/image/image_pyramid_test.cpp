@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/util/error.hpp"
+#include "tests/support/random_rectangles.hpp"
 
 namespace facadeslam {
 namespace {
@@ -12,11 +13,7 @@ cv::Mat textured(cv::Size size) {
   cv::Mat img(size, CV_8UC3);
   cv::RNG rng(7);
   img.setTo(cv::Scalar(120, 120, 120));
-  for (int i = 0; i < 300; ++i) {
-    const cv::Point p(rng.uniform(0, size.width), rng.uniform(0, size.height));
-    cv::rectangle(img, cv::Rect(p, cv::Size(rng.uniform(6, 30), rng.uniform(6, 30))),
-                  cv::Scalar(rng.uniform(0, 255), rng.uniform(0, 255), rng.uniform(0, 255)), cv::FILLED);
-  }
+  test::paint_random_rectangles(img, rng, 300, 0, 6, 30);
   return img;
 }
 

@@ -30,18 +30,22 @@ class Random {
     return std::uniform_real_distribution<double>(lo, hi)(engine_);
   }
 
+  // Vectors are drawn one entry a statement, in index order: as the
+  // arguments of one call they would be drawn in the compiler's order (GCC
+  // right to left, clang left to right), and the tests' data with them.
   Eigen::Vector3d unit_vector() {
     std::normal_distribution<double> n(0.0, 1.0);
     Eigen::Vector3d v;
     do {
-      v = Eigen::Vector3d(n(engine_), n(engine_), n(engine_));
+      for (int i = 0; i < 3; ++i) v[i] = n(engine_);
     } while (v.norm() < 1e-3);
     return v.normalized();
   }
 
   Eigen::Vector3d vector3(double half_range) {
-    return Eigen::Vector3d(uniform(-half_range, half_range), uniform(-half_range, half_range),
-                           uniform(-half_range, half_range));
+    Eigen::Vector3d v;
+    for (int i = 0; i < 3; ++i) v[i] = uniform(-half_range, half_range);
+    return v;
   }
 
   // A uniformly random rotation vector with |omega| < max_angle.
@@ -54,7 +58,7 @@ class Random {
     std::normal_distribution<double> n(0.0, 1.0);
     Eigen::Vector4d q;
     do {
-      q = Eigen::Vector4d(n(engine_), n(engine_), n(engine_), n(engine_));
+      for (int i = 0; i < 4; ++i) q[i] = n(engine_);
     } while (q.norm() < 1e-3);
     return q.normalized();
   }

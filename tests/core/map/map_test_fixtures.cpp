@@ -30,7 +30,7 @@ void build_test_map(Map& map, int n_points) {
   for (int i = 0; i < n_points; ++i) {
     PatchSource source{first_keyframe, frames[0].pyramid, i % 4, {20.0 + i, 30.0 + 0.5 * i}};
     PointGeometry g;
-    g.p_w = Eigen::Vector3d(u(rng), u(rng), 4 + u(rng));
+    g.p_w << u(rng), u(rng), 4 + u(rng);  // drawn in order (a call's arguments would not be)
     g.right_w = Eigen::Vector3d(0.01, 0, 0);
     g.down_w = Eigen::Vector3d(0, 0.01, 0);
     g.normal_w = Eigen::Vector3d(0, 0, -1);

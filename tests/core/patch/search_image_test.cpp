@@ -11,9 +11,15 @@ namespace {
 cv::Mat squares() {
   cv::Mat image(240, 320, CV_8UC1, cv::Scalar(50));
   cv::RNG rng(2);
-  for (int i = 0; i < 60; ++i)
-    cv::rectangle(image, cv::Rect(rng.uniform(0, 300), rng.uniform(0, 220), rng.uniform(5, 30), rng.uniform(5, 30)),
-                  cv::Scalar(rng.uniform(100, 250)), cv::FILLED);
+  for (int i = 0; i < 60; ++i) {
+    // One draw a statement, in order: a call's arguments would be drawn in the compiler's order.
+    const int x = rng.uniform(0, 300);
+    const int y = rng.uniform(0, 220);
+    const int width = rng.uniform(5, 30);
+    const int height = rng.uniform(5, 30);
+    const int brightness = rng.uniform(100, 250);
+    cv::rectangle(image, cv::Rect(x, y, width, height), cv::Scalar(brightness), cv::FILLED);
+  }
   return image;
 }
 

@@ -57,7 +57,11 @@ TEST(EvaluateTrajectory, Se3AlignmentOfANoisyCopy) {
   std::mt19937 rng(42);
   const double sigma = 0.01;
   std::normal_distribution<double> noise(0.0, sigma);
-  for (auto& pose : est) pose.T_w_c.translation() += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+  for (auto& pose : est) {
+    Eigen::Vector3d offset;
+    offset << noise(rng), noise(rng), noise(rng);  // drawn in order (a call's arguments would not be)
+    pose.T_w_c.translation() += offset;
+  }
 
   const auto e = evaluate_trajectory(gt, est, {AlignmentMode::se3});
   EXPECT_EQ(e.scale, 1.0);

@@ -32,8 +32,10 @@ struct Case {
 
 Case random_case(std::mt19937& rng) {
   std::normal_distribution<double> normal(0.0, 1.0);
-  const Eigen::Vector3d anchor(normal(rng), normal(rng), normal(rng));
-  const Eigen::Vector3d centre = anchor + Eigen::Vector3d(normal(rng), normal(rng), normal(rng)) * 2.0;
+  Eigen::Vector3d anchor, offset;  // << draws in order (a call's arguments would not)
+  anchor << normal(rng), normal(rng), normal(rng);
+  offset << normal(rng), normal(rng), normal(rng);
+  const Eigen::Vector3d centre = anchor + offset * 2.0;
   SE3d::Tangent xi;
   for (int i = 0; i < 6; ++i) xi(i) = normal(rng);
   const SO3d r = SE3d::exp(xi).so3();

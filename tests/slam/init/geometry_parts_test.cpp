@@ -159,7 +159,9 @@ TEST(HomographyRefinement, RecoversAPerturbedHomography) {
   std::vector<Eigen::Vector2d> x0, x1;
   std::vector<int> all;
   for (int i = 0; i < 100; ++i) {
-    x0.emplace_back(u(rng), u(rng));
+    Eigen::Vector2d x;
+    x << u(rng), u(rng);  // drawn in order (a call's arguments would be in the compiler's)
+    x0.push_back(x);
     x1.push_back((H * x0.back().homogeneous()).hnormalized());
     all.push_back(i);
   }

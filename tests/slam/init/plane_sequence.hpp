@@ -34,9 +34,13 @@ inline cv::Mat synthetic_facade_texture(int width, int height, unsigned seed) {
   cv::Mat image;
   texture.convertTo(image, CV_8U, 1.0, 20.0);
   for (int y = 20; y + 50 < height; y += 90)
-    for (int x = 20 + rng.uniform(0, 20); x + 40 < width; x += 70 + rng.uniform(0, 20))
-      cv::rectangle(image, cv::Rect(x, y, 36 + rng.uniform(0, 10), 46 + rng.uniform(0, 10)),
-                    cv::Scalar(rng.uniform(0, 255)), cv::FILLED);
+    for (int x = 20 + rng.uniform(0, 20); x + 40 < width; x += 70 + rng.uniform(0, 20)) {
+      // One draw a statement: a call's arguments are evaluated in the compiler's order.
+      const int window_width = 36 + rng.uniform(0, 10);
+      const int window_height = 46 + rng.uniform(0, 10);
+      const int brightness = rng.uniform(0, 255);
+      cv::rectangle(image, cv::Rect(x, y, window_width, window_height), cv::Scalar(brightness), cv::FILLED);
+    }
   cv::GaussianBlur(image, image, cv::Size(3, 3), 0.8);
   return image;
 }

@@ -73,7 +73,10 @@ inline SyntheticMatches make_matches(const Camera& camera, const SE3d& T_c1_c0, 
   SyntheticMatches m;
   int attempts = 0;
   while (static_cast<int>(m.points_c0.size()) < count && ++attempts < 100 * count) {
-    const Eigen::Vector2d px0(u(rng), v(rng));
+    // Vectors are filled with <<, which draws in order: as a call's arguments
+    // the draws would be in the compiler's order, and the data with them.
+    Eigen::Vector2d px0;
+    px0 << u(rng), v(rng);
     const Eigen::Vector3d ray = camera.unproject(px0);
     const Eigen::Vector3d p0 =
         shape == SceneShape::box ? Eigen::Vector3d(ray * depth(rng)) : Eigen::Vector3d(ray * (plane_distance / normal.dot(ray)));
@@ -82,13 +85,16 @@ inline SyntheticMatches make_matches(const Camera& camera, const SE3d& T_c1_c0, 
     const Eigen::Vector2d px1 = camera.project(p1);
     if (!camera.in_image(px1, 5.0)) continue;
     m.points_c0.push_back(p0);
-    m.pixels0.push_back(camera.project(p0) + Eigen::Vector2d(noise(rng), noise(rng)));
-    m.pixels1.push_back(px1 + Eigen::Vector2d(noise(rng), noise(rng)));
+    Eigen::Vector2d noise0, noise1;
+    noise0 << noise(rng), noise(rng);
+    noise1 << noise(rng), noise(rng);
+    m.pixels0.push_back(camera.project(p0) + noise0);
+    m.pixels1.push_back(px1 + noise1);
     m.outlier.push_back(false);
   }
   for (std::size_t i = 0; i < m.pixels1.size(); ++i) {
     if (unit(rng) >= outlier_fraction) continue;
-    m.pixels1[i] = Eigen::Vector2d(u(rng), v(rng));
+    m.pixels1[i] << u(rng), v(rng);
     m.outlier[i] = true;
   }
   return m;
