@@ -247,7 +247,15 @@ std::optional<ConfigNode> ConfigNode::optional_child(const std::string& key) con
 
 void ConfigNode::finish() const {
   for (const auto& entry : node_) {
-    const std::string key = entry.first.as<std::string>();
+    // A key that is itself a list, a mapping or null (`[a]: 1`, `~: 1`)
+    // can never be one this program reads.
+    if (!entry.first.IsScalar()) {
+      std::string where = prefix_.empty() ? std::string("at the top level") : "in '";
+      if (!prefix_.empty()) where.append(prefix_).append("'");
+      throw Error(*origin_ + ": " + where + ": expected keys that are plain names, got " +
+                  scalar_text(entry.first) + " as a key");
+    }
+    const std::string key = entry.first.Scalar();
     if (!read_keys_->count(key)) fail(key, "no such key here (unknown key; check its spelling)");
   }
 }

@@ -103,6 +103,8 @@ const Case kCases[] = {
      "short_distortion.yaml"},
     {"camera_text_fx", "replay {seq} --camera {corpus}/camera_yaml/text_fx.yaml --out {out}", 1, "text_fx.yaml"},
     {"camera_unknown_key", "replay {seq} --camera {corpus}/camera_yaml/unknown_key.yaml --out {out}", 1, "fz"},
+    {"camera_key_is_a_list", "replay {seq} --camera {corpus}/camera_yaml/key_is_a_list.yaml --out {out}", 1,
+     "key_is_a_list.yaml: at the top level: expected keys that are plain names, got a list as a key"},
     {"camera_not_yaml", "replay {seq} --camera {corpus}/camera_yaml/not_yaml.yaml --out {out}", 1, "not_yaml.yaml"},
     {"camera_unbalanced", "replay {seq} --camera {corpus}/camera_yaml/unbalanced.yaml --out {out}", 1,
      "unbalanced.yaml"},

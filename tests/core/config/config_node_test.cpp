@@ -53,6 +53,19 @@ TEST(ConfigNode, UnknownKeyNamesFileAndKey) {
               AllOf(HasSubstr("cam.yaml"), HasSubstr("'fxx'"), HasSubstr("unknown key")));
 }
 
+// Found by fuzz_camera_yaml: yaml-cpp's own conversion error escaped.
+TEST(ConfigNode, KeysThatAreNotNamesAreRejected) {
+  for (const std::string yaml : {"[a]: 1\n", "~: 1\n", "{x: 1}: 2\n", "n: {[a]: 1}\n"}) {
+    const auto c = ConfigNode::parse_string(yaml, "k.yaml");
+    EXPECT_THAT(error_of([&] {
+                  if (c.has("n")) c.child("n").finish();
+                  c.finish();
+                }),
+                AllOf(HasSubstr("k.yaml"), HasSubstr("plain names")))
+        << yaml;
+  }
+}
+
 TEST(ConfigNode, UnknownNestedKeyGivesFullPath) {
   const auto c = ConfigNode::parse_string("tracker:\n  coarse: {points: 50, radiuss: 3}\n", "slam.yaml");
   const auto coarse = c.child("tracker").child("coarse");
