@@ -2,12 +2,26 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "core/util/error.hpp"
+
 namespace facadeslam::synth {
 
 SceneYaml::SceneYaml(const std::filesystem::path& path, std::initializer_list<std::string> list_keys)
     // Reading through ConfigNode first gives its messages for a missing
     // file, a syntax error and a non-mapping top level.
     : root_(ConfigNode::load_file(path)) {
+  // The raw yaml-cpp work below (re-dumping parts of a document that
+  // ConfigNode has accepted) should not fail; if a hostile file finds a way,
+  // it is still one line naming the file.
+  try {
+    split_lists(path, list_keys);
+  } catch (const YAML::Exception& e) {
+    throw Error(path.string() + ": not valid YAML for a scene (line " + std::to_string(e.mark.line + 1) + ": " +
+                e.msg + ")");
+  }
+}
+
+void SceneYaml::split_lists(const std::filesystem::path& path, std::initializer_list<std::string> list_keys) {
   const YAML::Node document = YAML::LoadFile(path.string());
   YAML::Node rest = YAML::Clone(document);
   for (const std::string& key : list_keys) rest.remove(key);

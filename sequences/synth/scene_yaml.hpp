@@ -32,6 +32,8 @@ class SceneYaml {
   const std::vector<ConfigNode>& list(const std::string& key) const;
 
  private:
+  void split_lists(const std::filesystem::path& path, std::initializer_list<std::string> list_keys);
+
   ConfigNode root_;
   std::map<std::string, std::vector<ConfigNode>> lists_;
   std::vector<ConfigNode> empty_;
