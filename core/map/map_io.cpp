@@ -105,17 +105,28 @@ void put_pyramid(ByteWriter& out, const ImagePyramid& pyramid) {
   }
 }
 
-std::shared_ptr<const ImagePyramid> get_pyramid(ByteReader& in) {
+// The levels must be what ImagePyramid would have made from a camera image:
+// level 0 the camera's size, each next level half the one before (rounded
+// down), corners inside their level. Everything that reads a keyframe
+// (relocaliser, patch search, the semantic worker) relies on it.
+std::shared_ptr<const ImagePyramid> get_pyramid(ByteReader& in, const Camera& camera) {
   std::array<PyramidLevel, kPyramidLevels> levels;
+  cv::Size expected(camera.width(), camera.height());
   for (auto& level : levels) {
     level.image = get_mat(in, "pyramid image");
     if (level.image.type() != CV_8UC1) in.fail("pyramid level is not an 8-bit grey image");
+    if (level.image.size() != expected)
+      in.fail("a pyramid level is " + std::to_string(level.image.cols) + "x" + std::to_string(level.image.rows) +
+              ", expected " + std::to_string(expected.width) + "x" + std::to_string(expected.height));
     level.corners.resize(in.count("corner count", 12));
     for (auto& c : level.corners) {
       c.x = in.get<std::int32_t>("corner");
       c.y = in.get<std::int32_t>("corner");
       c.score = in.get<float>("corner");
+      if (c.x < 0 || c.y < 0 || c.x >= expected.width || c.y >= expected.height)
+        in.fail("a pyramid corner lies outside its level");
     }
+    expected = cv::Size(expected.width / 2, expected.height / 2);
   }
   return std::make_shared<const ImagePyramid>(std::move(levels));
 }
@@ -129,7 +140,7 @@ void put_colour(ByteWriter& out, const cv::Mat& colour) {
   out.put_bytes(png.data(), png.size());
 }
 
-cv::Mat get_colour(ByteReader& in) {
+cv::Mat get_colour(ByteReader& in, const Camera& camera) {
   const auto size = in.get<std::uint32_t>("colour image size");
   if (size == 0) return {};
   if (size > in.remaining()) in.fail("colour image larger than the file");
@@ -137,6 +148,9 @@ cv::Mat get_colour(ByteReader& in) {
   in.get_bytes(png.data(), size, "colour image");
   cv::Mat colour = cv::imdecode(png, cv::IMREAD_UNCHANGED);
   if (colour.empty()) in.fail("a keyframe colour image does not decode");
+  if (colour.size() != cv::Size(camera.width(), camera.height()) ||
+      (colour.type() != CV_8UC3 && colour.type() != CV_8UC1))
+    in.fail("a keyframe colour image is not an 8-bit grey or colour image of the camera's size");
   return colour;
 }
 
@@ -264,8 +278,8 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     const double mean_depth = get_finite(in, "keyframe depth stats");
     const double depth_sigma = get_finite(in, "keyframe depth stats");
     if (mean_depth <= 0.0 || depth_sigma < 0.0) in.fail("keyframe " + std::to_string(id) + " depth stats out of range");
-    auto pyramid = get_pyramid(in);
-    cv::Mat colour = get_colour(in);
+    auto pyramid = get_pyramid(in, camera);
+    cv::Mat colour = get_colour(in, camera);
     const std::size_t n_meas = in.count("measurement count", 29);
     Measurements measurements;
     for (std::size_t i = 0; i < n_meas; ++i) {

@@ -50,7 +50,11 @@ class ByteReader {
     std::memcpy(&value, take(sizeof(T), what), sizeof(T));
     return value;
   }
-  void get_bytes(void* out, std::size_t size, const char* what) { std::memcpy(out, take(size, what), size); }
+  // `out` may be null when `size` is 0 (an image with no columns).
+  void get_bytes(void* out, std::size_t size, const char* what) {
+    const char* from = take(size, what);
+    if (size) std::memcpy(out, from, size);
+  }
   // The next `size` bytes, or a failure naming `what` if fewer are left.
   const char* take(std::size_t size, const char* what);
   // A 32-bit count of items that follow, each at least `item_bytes` long.

@@ -9,7 +9,7 @@
 
 #include "core/map/binary_stream.hpp"
 #include "core/util/error.hpp"
-#include "tests/core/map/map_test_fixtures.hpp"
+#include "tests/support/small_map.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace facadeslam {
@@ -196,6 +196,17 @@ TEST_F(MapIo, HostileValuesWithAValidChecksumAreRejectedNamingTheField) {
                             d.replace(first + 16, 4, std::string(reinterpret_cast<const char*>(&level), 4));
                           }),
               AllOf(HasSubstr("level.fslmap"), HasSubstr("level out of range")));
+}
+
+// Found by fuzz_map_file: an empty pyramid level got as far as the
+// relocaliser's blur. Keyframe images must be of the camera's size.
+TEST_F(MapIo, KeyframeImagesOfAnotherSizeThanTheCameraAreRejected) {
+  Map other;
+  test::build_test_map(other, 4, Camera(128, 96, PinholeRadTan{120, 120, 63.5, 47.5, 0, 0, 0, 0, 0}));
+  save_map(dir / "sizes.fslmap", other, camera);  // under the fixture's 160x120 camera
+  Map loaded;
+  EXPECT_THAT(error_of([&] { load_map(dir / "sizes.fslmap", loaded); }),
+              AllOf(HasSubstr("sizes.fslmap"), HasSubstr("pyramid level is 128x96, expected 160x120")));
 }
 
 TEST_F(MapIo, Version2MapsLoadWithTheirLabels) {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/core/map/map_test_fixtures.hpp"
+#include "tests/support/small_map.hpp"
 
 namespace facadeslam {
 namespace {

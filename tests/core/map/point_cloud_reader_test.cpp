@@ -13,7 +13,7 @@
 
 #include "core/map/point_cloud_writer.hpp"
 #include "core/map/semantic_classes.hpp"
-#include "tests/core/map/map_test_fixtures.hpp"
+#include "tests/support/small_map.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace facadeslam {

@@ -68,6 +68,14 @@ TEST(ByteStream, ACountIsBoundedByItsMaximumAndByTheBytesLeft) {
   EXPECT_EQ(r.count("the node count", 1, 100), 5u);
 }
 
+// Found by fuzz_map_file under UBSan: an image header of N rows and 0
+// columns read each empty row into Mat::ptr(), which is null.
+TEST(ByteStream, ReadingNoBytesIntoNowhereIsAllowed) {
+  ByteReader r("x", "e.bin", "damaged test file");
+  r.get_bytes(nullptr, 0, "an empty row");
+  EXPECT_EQ(r.position(), 0u);
+}
+
 TEST(ByteStream, TextLongerThanAllowedIsRejected) {
   ByteWriter w;
   w.put_text("a much too long class name");

@@ -1,4 +1,4 @@
-#include "tests/core/map/map_test_fixtures.hpp"
+#include "tests/support/small_map.hpp"
 
 #include <random>
 
@@ -6,10 +6,9 @@ namespace facadeslam::test {
 
 Camera small_test_camera() { return Camera(160, 120, PinholeRadTan{150, 150, 79.5, 59.5, 0.01, 0, 0, 0, 0}); }
 
-void build_test_map(Map& map, int n_points) {
+void build_test_map(Map& map, int n_points, const Camera& camera) {
   std::mt19937 rng(3);
   std::uniform_int_distribution<int> pixel(0, 255);
-  const Camera camera = small_test_camera();
   std::vector<std::shared_ptr<KeyFrame>> keyframes;
   std::vector<Frame> frames;
   std::vector<SE3d> poses;
