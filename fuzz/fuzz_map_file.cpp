@@ -8,12 +8,8 @@
 // from a real structure, the target seeds its corpus with a small valid map
 // (the map tests' fixture on an 80x64 camera, ~45 KB) before libFuzzer reads
 // the corpus.
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <string>
 
-#include "core/map/binary_stream.hpp"
 #include "core/map/map.hpp"
 #include "core/map/map_io.hpp"
 #include "fuzz/fuzz_input.hpp"
@@ -21,22 +17,14 @@
 
 namespace {
 
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// A valid map without its trailing 8-byte checksum.
-std::string valid_map_body() {
+// A valid map without its trailing 8-byte checksum, written as `path`.
+void write_valid_map_body(const std::filesystem::path& path) {
   using namespace facadeslam;
   const Camera camera(80, 64, PinholeRadTan{75, 75, 39.5, 31.5, 0.01, 0, 0, 0, 0});  // the pyramid needs 64 px
   Map map;
   test::build_test_map(map, 8, camera);
-  const auto path = fuzz::scratch_folder() / "seed.fslmap";
   save_map(path, map, camera);
-  std::string bytes = read_bytes(path);
-  bytes.resize(bytes.size() - sizeof(std::uint64_t));
-  return bytes;
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) - sizeof(std::uint64_t));
 }
 
 }  // namespace
@@ -46,7 +34,7 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   for (int i = 1; i < *argc; ++i) {
     const std::filesystem::path folder = (*argv)[i];
     if ((*argv)[i][0] == '-' || !std::filesystem::is_directory(folder)) continue;
-    std::ofstream(folder / "valid_small_map.body", std::ios::binary | std::ios::trunc) << valid_map_body();
+    write_valid_map_body(folder / "valid_small_map.body");
     break;
   }
   return 0;
@@ -54,11 +42,7 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace facadeslam;
-  std::string file(reinterpret_cast<const char*>(data), size);
-  const std::uint64_t checksum = fnv1a64(file.data(), file.size());
-  char checksum_bytes[sizeof checksum];
-  std::memcpy(checksum_bytes, &checksum, sizeof checksum);  // little-endian, as the writer puts it
-  file.append(checksum_bytes, sizeof checksum_bytes);
+  const std::string file = test::with_map_checksum(std::string(reinterpret_cast<const char*>(data), size));
   const auto path = fuzz::write_input("input.fslmap", reinterpret_cast<const std::uint8_t*>(file.data()), file.size());
   fuzz::expect_clean_rejection([&] {
     Map map;

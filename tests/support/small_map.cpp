@@ -2,6 +2,8 @@
 
 #include <random>
 
+#include "core/map/binary_stream.hpp"
+
 namespace facadeslam::test {
 
 Camera small_test_camera() { return Camera(160, 120, PinholeRadTan{150, 150, 79.5, 59.5, 0.01, 0, 0, 0, 0}); }
@@ -50,6 +52,12 @@ void build_test_map(Map& map, int n_points, const Camera& camera) {
   map.update([&](MapEditor& edit) {
     for (std::size_t k = 0; k < keyframes.size(); ++k) edit.set_depth_stats(*keyframes[k], 4.0 + k, 0.5);
   });
+}
+
+std::string with_map_checksum(std::string body) {
+  const std::uint64_t checksum = fnv1a64(body.data(), body.size());
+  body.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);  // little-endian, as ByteWriter puts it
+  return body;
 }
 
 }  // namespace facadeslam::test

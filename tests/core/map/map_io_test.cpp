@@ -154,19 +154,12 @@ std::string as_version2(const std::string& v3, const std::vector<std::shared_ptr
     v2.push_back(v3[at + kHead + kVotes]);
   }
   v2[8] = 2;
-  const std::uint64_t checksum = fnv1a64(v2.data(), v2.size());
-  v2.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
-  return v2;
+  return test::with_map_checksum(v2);
 }
 
 // A hostile file with a valid checksum (issue 20): the loader checks what
 // the data means, naming the file and the field. Point records are the
 // file's last bytes before the checksum (see as_version2).
-std::string with_checksum(std::string body) {
-  const std::uint64_t checksum = fnv1a64(body.data(), body.size());
-  body.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
-  return body;
-}
 
 TEST_F(MapIo, HostileValuesWithAValidChecksumAreRejectedNamingTheField) {
   constexpr std::size_t kHead = 8 + 8 + 4 + 2 * 8 + 12 * 8, kRecord = kHead + sizeof(ClassVotes) + 1;
@@ -175,7 +168,7 @@ TEST_F(MapIo, HostileValuesWithAValidChecksumAreRejectedNamingTheField) {
   const auto load_edited = [&](const std::string& name, const std::function<void(std::string&)>& edit) {
     std::string data = good.substr(0, body);
     edit(data);
-    write_file(dir / name, with_checksum(data));
+    write_file(dir / name, test::with_map_checksum(data));
     Map loaded;
     return error_of([&] { load_map(dir / name, loaded); });
   };
