@@ -17,6 +17,7 @@
 #include "apps/commands.hpp"
 #include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
+#include "core/util/path_checks.hpp"
 #include "core/util/interrupt.hpp"
 #include "semantics/optimiser/ga_options.hpp"
 #include "semantics/optimiser/optimisation_run.hpp"
@@ -93,7 +94,7 @@ void run(Options& o) {
   cv::setNumThreads(1);
   // The run folder can be made (or is one) before any work.
   require_creatable_folder(o.run.out);
-  if (o.config_given || std::filesystem::exists(o.config)) o.run.ga = semantics::load_ga_options(o.config);
+  if (o.config_given || path_exists(o.config)) o.run.ga = semantics::load_ga_options(o.config);
   if (o.population) o.run.ga.population = *o.population;
   if (o.generations) o.run.ga.generations = *o.generations;
   if (o.run.ga.elites >= o.run.ga.population)

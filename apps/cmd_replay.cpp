@@ -22,6 +22,7 @@
 #include "core/camera/camera_yaml.hpp"
 #include "core/trajectory/trajectory_io.hpp"
 #include "core/util/error.hpp"
+#include "core/util/path_checks.hpp"
 #include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
 #include "core/util/staged_folder.hpp"
@@ -73,7 +74,7 @@ SemanticsOptions semantics_options(const ReplayOptions& o) {
   semantics.grey_model = kDefaultGreyModel;
   if (!o.semantics_config.empty())
     semantics = load_semantics_options(o.semantics_config, semantics);
-  else if (fs::exists(kDefaultSemanticsConfig))
+  else if (path_exists(kDefaultSemanticsConfig))
     semantics = load_semantics_options(kDefaultSemanticsConfig, semantics);
   if (!o.semantics.empty()) semantics.enabled = o.semantics == "on";
   if (!o.model.empty()) semantics.model = o.model;
@@ -81,9 +82,9 @@ SemanticsOptions semantics_options(const ReplayOptions& o) {
   if (!semantics.enabled) return semantics;
   // Run from elsewhere, the shipped grey model is not found: grey sequences
   // then stay unlabelled (said at the end of the run), colour ones are as usual.
-  if (o.grey_model.empty() && semantics.grey_model == kDefaultGreyModel && !fs::exists(semantics.grey_model))
+  if (o.grey_model.empty() && semantics.grey_model == kDefaultGreyModel && !path_exists(semantics.grey_model))
     semantics.grey_model.clear();
-  if (o.model.empty() && semantics.model == kDefaultModel && !fs::exists(semantics.model)) {
+  if (o.model.empty() && semantics.model == kDefaultModel && !path_exists(semantics.model)) {
     spdlog::warn("no model at {} (run from the project folder, or pass --model): semantics off", kDefaultModel.string());
     semantics.enabled = false;
   }
@@ -93,14 +94,14 @@ SemanticsOptions semantics_options(const ReplayOptions& o) {
 int run_replay(ReplayOptions o) {
   if (o.sequence.empty()) {
     o.sequence = kDemoSequence;
-    if (!fs::exists(o.sequence))
+    if (!path_exists(o.sequence))
       throw Error(o.sequence.string() + ": the embedded demo is not rendered yet (run scripts/make-demo, or pass a SEQUENCE)");
-    if (o.gt.empty() && fs::exists(o.sequence / "groundtruth.txt")) o.gt = o.sequence / "groundtruth.txt";
+    if (o.gt.empty() && path_exists(o.sequence / "groundtruth.txt")) o.gt = o.sequence / "groundtruth.txt";
   }
   if (o.out.empty()) o.out = kDefaultOutput;
   if (o.camera.empty()) {
-    const fs::path beside = (fs::is_directory(o.sequence) ? o.sequence : o.sequence.parent_path()) / "camera.yaml";
-    if (!fs::exists(beside))
+    const fs::path beside = (is_existing_folder(o.sequence) ? o.sequence : o.sequence.parent_path()) / "camera.yaml";
+    if (!path_exists(beside))
       throw Error(o.sequence.string() + ": no camera given and no camera.yaml beside the sequence (pass --camera)");
     o.camera = beside;
   }

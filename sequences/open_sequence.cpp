@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/util/error.hpp"
+#include "core/util/path_checks.hpp"
 #include "sequences/image_folder_source.hpp"
 #include "sequences/looping_source.hpp"
 #include "sequences/tum_list_source.hpp"
@@ -48,7 +49,7 @@ std::unique_ptr<FrameSource> open_one_pass(const fs::path& path, const SequenceO
     case SequenceKind::image_folder: return std::make_unique<ImageFolderSource>(path, options);
     case SequenceKind::tum_list:
       return std::make_unique<TumListSource>(
-          fs::is_directory(path) ? path / "rgb.txt" : path, options);
+          is_existing_folder(path) ? path / "rgb.txt" : path, options);
     case SequenceKind::video: return std::make_unique<VideoSource>(path, options);
   }
   throw Error("open_sequence: unknown sequence kind");  // unreachable; keeps -Wreturn-type quiet

@@ -1,6 +1,7 @@
 #include "apps/replay/ground_truth_labels.hpp"
 
 #include "core/util/error.hpp"
+#include "core/util/path_checks.hpp"
 #include "semantics/evaluation/label_image.hpp"
 #include "sequences/synth/label_classes.hpp"
 
@@ -10,12 +11,12 @@ namespace fs = std::filesystem;
 
 fs::path find_ground_truth_labels(const fs::path& sequence, const fs::path& given) {
   if (!given.empty()) {
-    if (!fs::is_directory(given)) fail_file(given, "--gt-labels expects a folder of label PNGs named like the frames");
+    if (!is_existing_folder(given)) fail_file(given, "--gt-labels expects a folder of label PNGs named like the frames");
     return given;
   }
-  const fs::path folder = fs::is_directory(sequence) ? sequence : sequence.parent_path();
+  const fs::path folder = is_existing_folder(sequence) ? sequence : sequence.parent_path();
   const fs::path beside = folder / "label";
-  return fs::is_directory(beside) && fs::exists(folder / "labels.txt") ? beside : fs::path();
+  return is_existing_folder(beside) && path_exists(folder / "labels.txt") ? beside : fs::path();
 }
 
 GroundTruthLabelFiles::GroundTruthLabelFiles(fs::path folder) : folder_(std::move(folder)) {}

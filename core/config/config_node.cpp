@@ -72,7 +72,13 @@ std::string ConfigNode::full_key(const std::string& key) const {
 
 void ConfigNode::fail(const std::string& key, const std::string& expected, const std::string& got) const {
   std::string message = *origin_ + ": key '" + full_key(key) + "': expected " + expected;
-  if (!got.empty()) message += ", got '" + got + "'";
+  // A value of hundreds of characters (a pasted blob, a fuzzer's) would
+  // bury the message: its start is enough to recognise it.
+  constexpr std::size_t kShownValue = 80;
+  if (!got.empty() && got.size() <= kShownValue) message += ", got '" + got + "'";
+  if (got.size() > kShownValue)
+    message.append(", got '").append(got, 0, kShownValue).append("...' (").append(std::to_string(got.size())).append(
+        " characters)");
   throw Error(message);
 }
 
@@ -243,6 +249,23 @@ std::optional<ConfigNode> ConfigNode::optional_child(const std::string& key) con
     return std::nullopt;
   }
   return child(key);
+}
+
+std::vector<ConfigNode> ConfigNode::get_mappings(const std::string& key) const {
+  std::vector<ConfigNode> items;
+  if (!has(key)) {
+    read_keys_->insert(key);
+    return items;
+  }
+  const YAML::Node v = required(key);
+  if (!v.IsSequence()) fail(key, "a list of mappings (lines starting with '- ')", scalar_text(v));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    std::string item_key = key;
+    item_key.append("[").append(std::to_string(i)).append("]");
+    if (!v[i].IsMap()) fail(item_key, "a mapping of keys", scalar_text(v[i]));
+    items.push_back(ConfigNode(v[i], origin_, full_key(item_key)));
+  }
+  return items;
 }
 
 void ConfigNode::finish() const {

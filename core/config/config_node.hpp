@@ -63,6 +63,10 @@ class ConfigNode {
   // A nested mapping (required / optional).
   ConfigNode child(const std::string& key) const;
   std::optional<ConfigNode> optional_child(const std::string& key) const;
+  // A list of mappings (a scene's facades, trajectory segments, ...): one
+  // node per item, whose keys appear in messages as "facades[2].width"; an
+  // absent key is an empty list. Each item must be finish()ed by its reader.
+  std::vector<ConfigNode> get_mappings(const std::string& key) const;
 
   // Fails on the first key of this mapping that no get/child call has read.
   // Call it on each mapping after reading it.

@@ -17,6 +17,7 @@
 #include "core/util/atomic_write.hpp"
 #include "core/util/json.hpp"
 #include "core/util/error.hpp"
+#include "core/util/path_checks.hpp"
 #include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
 #include "core/util/stopwatch.hpp"
@@ -169,7 +170,7 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
   // Everything that can fail cheaply, before the long work.
   if (options.workers < 1) throw Error("optimise: --workers must be at least 1");
   const nlohmann::json settings = settings_json(options);
-  const fs::path newest = fs::exists(options.out) ? newest_checkpoint(options.out) : fs::path();
+  const fs::path newest = path_exists(options.out) ? newest_checkpoint(options.out) : fs::path();
   if (!options.resume && !newest.empty())
     throw Error(options.out.string() + ": holds a run already (" + newest.filename().string() +
                 "); pass --resume to continue it, or choose another --out");

@@ -6,9 +6,10 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/camera/camera_yaml.hpp"
+#include "core/config/config_node.hpp"
 #include "core/util/error.hpp"
+#include "core/util/path_checks.hpp"
 #include "sequences/synth/label_classes.hpp"
-#include "sequences/synth/scene_yaml.hpp"
 
 namespace facadeslam::synth {
 namespace {
@@ -253,17 +254,15 @@ void check_trajectory_covers_frames(const SceneSpec& scene, const std::string& w
 }
 
 SceneSpec load_scene(const fs::path& path) {
-  const SceneYaml yaml(path, {"facades", "trajectory", "lighting", "cars", "vegetation", "streets"});
-  const ConfigNode& root = yaml.root();
+  const ConfigNode root = ConfigNode::load_file(path);
   SceneSpec scene;
   scene.path = path;
   const fs::path folder = path.parent_path();
 
   const std::string camera_file = root.get_string("camera");
-  if (!fs::is_regular_file(folder / camera_file))
+  if (!is_existing_file(folder / camera_file))
     root.fail("camera", "an existing camera YAML file, relative to the scene file (looked for " +
-                            (folder / camera_file).string() + ")",
-              camera_file);
+                            (folder / camera_file).string() + ")");
   scene.camera = load_camera(folder / camera_file);
   if (root.has("resolution")) {
     const auto r = root.get_doubles("resolution", 2, Range::closed(16, 8192));
@@ -283,27 +282,29 @@ SceneSpec load_scene(const fs::path& path) {
               root.get_string("photos", "."));
 
   scene.street = read_street(root.child("street"));
-  for (const ConfigNode& item : yaml.list("streets")) scene.street.branches.push_back(read_branch(item));
+  for (const ConfigNode& item : root.get_mappings("streets")) scene.street.branches.push_back(read_branch(item));
   if (const auto sky = root.optional_child("sky")) scene.sky = read_sky(*sky);
 
-  if (yaml.list("facades").empty()) root.fail("facades", "a list of at least one facade");
-  for (const ConfigNode& item : yaml.list("facades")) scene.facades.push_back(read_facade(item, photo_root));
+  const std::vector<ConfigNode> facades = root.get_mappings("facades");
+  if (facades.empty()) root.fail("facades", "a list of at least one facade");
+  for (const ConfigNode& item : facades) scene.facades.push_back(read_facade(item, photo_root));
 
   scene.start = read_start(root.child("start"));
-  if (yaml.list("trajectory").empty()) root.fail("trajectory", "a list of at least one segment");
-  for (const ConfigNode& item : yaml.list("trajectory")) scene.trajectory.push_back(read_segment(item));
+  const std::vector<ConfigNode> segments = root.get_mappings("trajectory");
+  if (segments.empty()) root.fail("trajectory", "a list of at least one segment");
+  for (const ConfigNode& item : segments) scene.trajectory.push_back(read_segment(item));
   if (const auto handheld = root.optional_child("handheld")) scene.handheld = read_jitter(*handheld);
   if (const auto blur = root.optional_child("motion_blur")) scene.motion_blur = read_motion_blur(*blur);
 
-  for (const ConfigNode& item : yaml.list("lighting")) {
+  for (const ConfigNode& item : root.get_mappings("lighting")) {
     const LightingKey key = read_lighting_key(item);
     if (!scene.lighting.empty() && key.time <= scene.lighting.back().time)
       item.fail("time", "a time after the previous key's (" + number(scene.lighting.back().time) + " s)",
                 number(key.time));
     scene.lighting.push_back(key);
   }
-  for (const ConfigNode& item : yaml.list("cars")) scene.cars.push_back(read_car(item, photo_root));
-  for (const ConfigNode& item : yaml.list("vegetation"))
+  for (const ConfigNode& item : root.get_mappings("cars")) scene.cars.push_back(read_car(item, photo_root));
+  for (const ConfigNode& item : root.get_mappings("vegetation"))
     scene.vegetation.push_back(read_vegetation(item, photo_root));
   root.finish();
 

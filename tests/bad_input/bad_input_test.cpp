@@ -161,6 +161,10 @@ const Case kCases[] = {
      "negative_frames.yaml"},
     {"scene_missing_camera", "synth --scene {corpus}/scene_yaml/missing_camera.yaml --out {out}", 1,
      "no-such-camera.yaml"},
+    // A name longer than the file system allows (found by fuzz_scene_yaml:
+    // std::filesystem's own error escaped the existence check).
+    {"scene_camera_name_too_long", "synth --scene {corpus}/scene_yaml/camera_name_too_long.yaml --out {out}", 1,
+     "key 'camera': expected an existing camera YAML file"},
     {"scene_empty", "synth --scene {corpus}/scene_yaml/empty.yaml --out {out}", 1, "empty.yaml"},
     {"scene_missing", "synth --scene {case}/none.yaml --out {out}", 1, "none.yaml: no such file"},
     // Trajectories (point 5)

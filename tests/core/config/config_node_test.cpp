@@ -66,6 +66,27 @@ TEST(ConfigNode, KeysThatAreNotNamesAreRejected) {
   }
 }
 
+TEST(ConfigNode, ListsOfMappingsNameEachItemInMessages) {
+  const auto c = ConfigNode::parse_string(
+      "cars: [{width: 4}, {width: 5, colour: red}]\nnone: []\nscalar: 3\nmixed: [{width: 1}, 7]\n", "scene.yaml");
+  const std::vector<ConfigNode> cars = c.get_mappings("cars");
+  ASSERT_EQ(cars.size(), 2u);
+  EXPECT_DOUBLE_EQ(cars[1].get_double("width"), 5.0);
+  EXPECT_THAT(error_of([&] { cars[1].finish(); }), AllOf(HasSubstr("scene.yaml"), HasSubstr("'cars[1].colour'")));
+  EXPECT_TRUE(c.get_mappings("none").empty());
+  EXPECT_TRUE(c.get_mappings("absent").empty());
+  EXPECT_THAT(error_of([&] { c.get_mappings("scalar"); }), AllOf(HasSubstr("'scalar'"), HasSubstr("a list of mappings")));
+  EXPECT_THAT(error_of([&] { c.get_mappings("mixed"); }), AllOf(HasSubstr("'mixed[1]'"), HasSubstr("a mapping")));
+  EXPECT_NO_THROW(c.finish());  // every key above was read
+}
+
+TEST(ConfigNode, AValueOfHundredsOfCharactersIsShownByItsStart) {
+  const auto c = ConfigNode::parse_string("mode: " + std::string(500, 'x') + "\n", "long.yaml");
+  const std::string message = error_of([&] { c.get_choice("mode", {"a", "b"}); });
+  EXPECT_THAT(message, AllOf(HasSubstr("long.yaml"), HasSubstr("'mode'"), HasSubstr("xxx...' (500 characters)")));
+  EXPECT_LT(message.size(), 200u);
+}
+
 TEST(ConfigNode, UnknownNestedKeyGivesFullPath) {
   const auto c = ConfigNode::parse_string("tracker:\n  coarse: {points: 50, radiuss: 3}\n", "slam.yaml");
   const auto coarse = c.child("tracker").child("coarse");
