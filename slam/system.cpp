@@ -5,6 +5,7 @@
 #include "core/map/map_io.hpp"
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
+#include "semantics/worker/neighbour_label_fusion.hpp"
 
 namespace facadeslam {
 
@@ -23,7 +24,8 @@ namespace {
 
 // The worker for `options`, or none. The model is loaded here, before any
 // frame: a missing or foreign model fails the run before it starts.
-std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& options, KeyFramePointsQueue& queue) {
+std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& options, KeyFramePointsQueue& queue,
+                                                       const Map& map) {
   if (!options.enabled) return nullptr;
   const auto load = [](const std::filesystem::path& path) {
     semantics::ForestModel model = semantics::load_forest_model(path);
@@ -34,6 +36,7 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
   auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model), queue, options.class_weights());
   if (!options.grey_model.empty()) worker->use_grey_model(load(options.grey_model));
   worker->use_context_scale(options.context_scale);
+  worker->use_neighbour_fusion(map, options.label_neighbours);
   return worker;
 }
 
@@ -55,7 +58,7 @@ SlamOptions with_label_aware_tracking(SlamOptions options) {
 System::System(Camera camera, SlamOptions options)
     : camera_(std::move(camera)),
       options_(with_label_aware_tracking(std::move(options))),
-      worker_(make_worker(options_.semantics, new_points_)),
+      worker_(make_worker(options_.semantics, new_points_, map_)),
       map_maker_(camera_, map_, queue_, options_.mapmaker, worker_ ? &new_points_ : nullptr),
       tracker_(camera_, map_, queue_, options_.tracker),
       initialiser_(camera_, options_.initialisation, map_maker_) {}
@@ -85,6 +88,9 @@ void System::load_map(const std::filesystem::path& path) {
   facadeslam::load_map(path, map_, &camera_);
   if (map_.keyframe_count() < 2 || map_.point_count() == 0)
     fail_file(path, "the map has no keyframes or points to track against");
+  // The file keeps each point's own votes; its labels are those fused with
+  // the neighbours', as when the map was made.
+  semantics::fuse_labels_with_neighbours(map_, options_.semantics.label_neighbours);
   // Nothing is known of the camera yet: the tracker starts lost and relocalises.
   start_tracking(map_.snapshot_keyframes().back().T_c_w, 0, Eigen::Matrix<double, 6, 1>::Zero());
   tracker_.mark_lost();
@@ -232,6 +238,8 @@ void System::finish() {
     map_maker_.stop();
     if (worker_) worker_->stop();
   }
+  // The final bundle adjustment has moved the points since the last fusion.
+  if (worker_) worker_->fuse();
 }
 
 }  // namespace facadeslam

@@ -64,7 +64,7 @@ void Tracker::reset() {
 
 bool Tracker::unreliable(const MapPoint& point) const {
   if (options_.unreliable_classes.none()) return false;
-  const SemanticLabel label = point.label();
+  const SemanticLabel label = point.own_label();  // see MapPoint::own_label
   return label.label < options_.unreliable_classes.size() && options_.unreliable_classes.test(label.label) &&
          label.confidence >= options_.unreliable_min_confidence;
 }

@@ -7,19 +7,33 @@ namespace facadeslam {
 
 MapPoint::MapPoint(Id id, PatchSource source, const PointGeometry& geometry)
     : id_(id), source_(std::move(source)), geometry_(geometry), view_(source_), view_geometry_(geometry),
-      packed_label_(kUnlabelled) {}
+      packed_label_(kUnlabelled), packed_own_label_(kUnlabelled) {}
+
+namespace {
 
 // Label and confidence travel in one 64-bit atomic so a reader never sees a
 // label paired with another label's confidence.
-SemanticLabel MapPoint::label() const {
-  const std::uint64_t packed = packed_label_.load(std::memory_order_acquire);
+SemanticLabel unpack(const std::atomic<std::uint64_t>& packed_label) {
+  const std::uint64_t packed = packed_label.load(std::memory_order_acquire);
   return {static_cast<std::uint8_t>(packed & 0xff), std::bit_cast<float>(static_cast<std::uint32_t>(packed >> 8))};
 }
 
-void MapPoint::set_label(SemanticLabel label) {
+void pack(std::atomic<std::uint64_t>& packed_label, SemanticLabel label) {
   const std::uint64_t packed =
       (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(label.confidence)) << 8) | label.label;
-  packed_label_.store(packed, std::memory_order_release);
+  packed_label.store(packed, std::memory_order_release);
+}
+
+}  // namespace
+
+SemanticLabel MapPoint::label() const { return unpack(packed_label_); }
+SemanticLabel MapPoint::own_label() const { return unpack(packed_own_label_); }
+void MapPoint::set_label_from(const ClassVotes& evidence) { pack(packed_label_, label_from_votes(evidence)); }
+
+void MapPoint::set_labels_from_votes() {
+  const SemanticLabel own = label_from_votes(votes_);
+  pack(packed_own_label_, own);
+  pack(packed_label_, own);
 }
 
 SemanticLabel label_from_votes(const ClassVotes& votes) {
@@ -41,13 +55,13 @@ ClassVotes MapPoint::votes() const {
 void MapPoint::add_votes(const ClassVotes& votes) {
   std::lock_guard lock(votes_mutex_);
   for (std::size_t c = 0; c < votes.size(); ++c) votes_[c] += votes[c];
-  set_label(label_from_votes(votes_));
+  set_labels_from_votes();
 }
 
 void MapPoint::set_votes(const ClassVotes& votes) {
   std::lock_guard lock(votes_mutex_);
   votes_ = votes;
-  set_label(label_from_votes(votes_));
+  set_labels_from_votes();
 }
 
 PointGeometry fronto_parallel_geometry(const Eigen::Matrix3d& R_w_c, const Eigen::Vector3d& centre_w,

@@ -84,14 +84,24 @@ class MapPoint {
   const PatchSource& view() const { return view_; }
   const PointGeometry& view_geometry() const { return view_geometry_; }
 
-  // Lock-free; written by the semantic worker, read by the tracker and outputs.
+  // Two labels, lock-free; written by the semantic worker. label() is the
+  // map's: the point's votes fused with its map neighbours'
+  // (semantics/worker/neighbour_label_fusion; until the worker fuses, its
+  // own), what the outputs show. own_label() is what the point's own views
+  // say, what the tracker weighs points by: fused labels call more of a
+  // still tree vegetation, and the demo's threaded ATE went 0.46-0.48 ->
+  // 0.49-0.50 % with them (docs/benchmarks.md, session 22).
   SemanticLabel label() const;
-  // The vote sums behind the label. add_votes fuses one more observation's
-  // votes and updates the label; set_votes replaces them (loading a map).
-  // Only the semantic worker writes votes while the system runs.
+  SemanticLabel own_label() const;
+  // The vote sums behind the labels. add_votes fuses one more observation's
+  // votes and sets both labels from them; set_votes replaces them (loading a
+  // map). Only the semantic worker writes votes while the system runs.
   ClassVotes votes() const;
   void add_votes(const ClassVotes& votes);
   void set_votes(const ClassVotes& votes);
+  // The map's label from `evidence` (the votes fused with the neighbours');
+  // the votes and the own label stay the point's.
+  void set_label_from(const ClassVotes& evidence);
 
   // Marked bad by the map maker (MapEditor::mark_bad); snapshots leave bad
   // points out and Map::remove_bad_points removes them.
@@ -114,9 +124,10 @@ class MapPoint {
   PointGeometry geometry_;
   PatchSource view_;
   PointGeometry view_geometry_;
-  void set_label(SemanticLabel label);
+  void set_labels_from_votes();  // under votes_mutex_
 
-  std::atomic<std::uint64_t> packed_label_;  // label in the low byte, confidence bits above
+  // Label in the low byte, confidence bits above.
+  std::atomic<std::uint64_t> packed_label_, packed_own_label_;
   // The votes are read rarely (outputs, the map file) and written by one
   // thread; a mutex keeps a reader from seeing half an update.
   mutable std::mutex votes_mutex_;

@@ -12,6 +12,7 @@
 
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
+#include "semantics/worker/neighbour_label_fusion.hpp"
 
 namespace facadeslam::semantics {
 
@@ -52,6 +53,12 @@ void SemanticWorker::use_grey_model(ForestModel model) {
 void SemanticWorker::use_context_scale(double scale) {
   if (!(scale >= 0.0 && scale < 1.0)) throw Error("semantic worker: a context scale in [0, 1) (0 = none), not " + std::to_string(scale));
   context_scale_ = scale;
+}
+
+void SemanticWorker::use_neighbour_fusion(const Map& map, int neighbours) {
+  if (neighbours < 0) throw Error("semantic worker: a number of neighbours >= 0 (0 = none), not " + std::to_string(neighbours));
+  fusion_map_ = &map;
+  fusion_neighbours_ = neighbours;
 }
 
 SemanticWorker::~SemanticWorker() { stop(); }
@@ -126,8 +133,22 @@ void SemanticWorker::label(const KeyFramePoints& job) {
   stats_.keyframe_ms.push_back(watch.elapsed_ms());
 }
 
+void SemanticWorker::fuse() {
+  if (fusion_map_ == nullptr || fusion_neighbours_ == 0) return;
+  const Stopwatch watch;
+  fuse_labels_with_neighbours(*fusion_map_, fusion_neighbours_);
+  // Part of the last keyframe's work in the figures.
+  std::lock_guard lock(stats_mutex_);
+  if (!stats_.keyframe_ms.empty()) stats_.keyframe_ms.back() += watch.elapsed_ms();
+}
+
 void SemanticWorker::process_pending() {
-  while (auto job = queue_.try_pop()) label(*job);
+  bool labelled = false;
+  while (auto job = queue_.try_pop()) {
+    label(*job);
+    labelled = true;
+  }
+  if (labelled) fuse();
 }
 
 void SemanticWorker::start() {
@@ -154,6 +175,7 @@ void SemanticWorker::run() {
     queue_.wait_until([] { return false; });
     if (auto job = queue_.try_pop()) {
       label(*job);
+      if (queue_.empty()) fuse();  // a backlog is fused once, after its last keyframe
       continue;
     }
     if (queue_.closed()) break;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/map/keyframe_points.hpp"
+#include "core/map/map.hpp"
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
 
@@ -53,6 +54,11 @@ class SemanticWorker {
   // then covers 1/scale times more of the facade around the point, context a
   // 21-pixel patch at a window's corner does not have. Call before start().
   void use_context_scale(double scale);
+  // After each round of keyframes, give every labelled point of `map` the
+  // label of its votes fused with its `neighbours` nearest points' (0 = its
+  // own votes; neighbour_label_fusion.hpp). Call before start(); `map` must
+  // outlive the worker.
+  void use_neighbour_fusion(const Map& map, int neighbours);
   ~SemanticWorker();
   SemanticWorker(const SemanticWorker&) = delete;
   SemanticWorker& operator=(const SemanticWorker&) = delete;
@@ -67,7 +73,9 @@ class SemanticWorker {
   SemanticWorkerStats stats() const;
 
   // Labels one keyframe's points now (the unit of work; public for tests).
+  // The neighbour fusion follows once the queue is drained (fuse()).
   void label(const KeyFramePoints& job);
+  void fuse();
 
  private:
   void run();
@@ -88,6 +96,8 @@ class SemanticWorker {
   std::optional<Classifier> grey_;
   ClassVotes class_weights_;
   double context_scale_ = 0.0;
+  const Map* fusion_map_ = nullptr;
+  int fusion_neighbours_ = 0;
   KeyFramePointsQueue& queue_;
   std::thread thread_;
   mutable std::mutex stats_mutex_;

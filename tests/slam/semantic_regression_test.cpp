@@ -67,20 +67,22 @@ SemanticRun run_scene(const std::string& name, bool semantics_on) {
 
 // The walk with labels: nearly every point labelled, most of them right, and
 // tracking as good as ever. The issue asks for a label accuracy of 0.70; the
-// shipped forest with view fusion, the class prior and the context of the
-// keyframe shrunk to a quarter gives 0.674 here (without the context 0.635;
-// fusion alone 0.43, the full prior 0.69 with no window or door left:
+// shipped forest with view fusion, the class prior, the context of the
+// keyframe shrunk to a quarter and each label fused with its 15 nearest map
+// points' gives 0.714 here (without the neighbours 0.674, without the context
+// 0.635; views alone 0.43, the full prior 0.69 with no window or door left:
 // windows are the forest's weak class, 12 % precision on LabelMeFacade
-// itself). The figure moves with the map: over the tracker's sampling seeds
-// 1-3 it is 0.671-0.676, so the threshold sits below that spread; NOTES.md
-// has the options for the rest.
+// itself). The figure moves with the map (how many of its points are
+// windows, all of them wrong): over the tracker's sampling seeds 1-3 it is
+// 0.702-0.714 (0.671-0.676 without the neighbours), so the issue's 0.70 holds
+// on each map, by a little. Windows stay at 0.00 (NOTES.md).
 TEST(SemanticRegression, StreetWalkIsLabelledAndStillTrackedWithinPointThreePercent) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
   const SemanticRun run = run_scene("street-walk", true);
   ASSERT_GT(run.points, 0u);
   EXPECT_GE(static_cast<double>(run.points - run.labels.unlabelled), 0.9 * static_cast<double>(run.points));
   ASSERT_TRUE(run.labels.accuracy().has_value());
-  EXPECT_GE(*run.labels.accuracy(), 0.65);
+  EXPECT_GE(*run.labels.accuracy(), 0.70);
   EXPECT_TRUE(run.log.lost_frames().empty());
   EXPECT_LE(run.ate.ate_percent_of_path, 0.3);
 }
@@ -132,6 +134,9 @@ SemanticRun run_with_true_labels(const std::string& name, double unreliable_weig
   scene.keep_labels();
   SlamOptions options = options_with_semantics(true);
   options.semantics.unreliable_weight = unreliable_weight;
+  // True labels need no neighbours' votes (and the labeller's overwhelming
+  // votes would count as one point's shares among them).
+  options.semantics.label_neighbours = 0;
   System system(scene.camera(), options);
   TrueLabeller labeller;
   SemanticRun run;

@@ -7,8 +7,11 @@
 #include <gtest/gtest.h>
 
 #include "core/camera/camera_yaml.hpp"
+#include "core/map/map_io.hpp"
 #include "mapmaker/map_maker.hpp"
+#include "semantics/worker/neighbour_label_fusion.hpp"
 #include "tests/slam/slam_test_run.hpp"
+#include "tests/support/small_map.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace facadeslam {
@@ -217,6 +220,32 @@ TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
     EXPECT_EQ(online.size(), final.size());
     EXPECT_GE(final.front().timestamp, scene.timestamp(black_from + kBlackFrames - 1));
     EXPECT_LT(test::evaluate(scene, final).ate_percent_of_path, 10.0);
+  }
+}
+
+// The map file keeps each point's own votes; the labels a loaded map shows
+// are those fused with the neighbours again, as when it was saved.
+TEST(System, ALoadedMapHasTheLabelsItWasSavedWith) {
+  Map saved;
+  test::build_test_map(saved, 20);
+  semantics::fuse_labels_with_neighbours(saved, 3);
+  std::size_t fused_differently = 0;
+  for (const auto& p : saved.points()) fused_differently += p->label().label != p->own_label().label;
+  ASSERT_GT(fused_differently, 0u) << "the fixture must have labels that the neighbours change";
+  test::TempDir dir;
+  save_map(dir.path() / "labelled.fslmap", saved, test::small_test_camera());
+
+  SlamOptions options = test::synchronous_options();
+  options.semantics.label_neighbours = 3;
+  System system(test::small_test_camera(), options);
+  system.load_map(dir.path() / "labelled.fslmap");
+  const auto before = saved.points();
+  const auto after = system.map().points();
+  ASSERT_EQ(before.size(), after.size());
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    EXPECT_EQ(after[i]->label(), before[i]->label()) << "point " << i;
+    EXPECT_EQ(after[i]->own_label(), before[i]->own_label()) << "point " << i;
+    EXPECT_EQ(after[i]->votes(), before[i]->votes()) << "point " << i;
   }
 }
 

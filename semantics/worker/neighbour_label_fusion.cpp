@@ -1,0 +1,151 @@
+#include "semantics/worker/neighbour_label_fusion.hpp"
+
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace facadeslam::semantics {
+namespace {
+
+struct LabelledPoint {
+  std::shared_ptr<MapPoint> point;
+  Eigen::Vector3d position;
+  ClassVotes shares;  // the point's votes scaled to sum to 1
+};
+
+// The good points with votes, their positions read under the map's lock (the
+// map maker moves them), ordered by id.
+std::vector<LabelledPoint> labelled_points(const Map& map) {
+  std::vector<LabelledPoint> points;
+  map.read([&](const MapView& view) {
+    points.reserve(view.points().size());
+    for (const auto& [id, point] : view.points()) {
+      if (point->is_bad()) continue;
+      ClassVotes votes = point->votes();
+      float total = 0.f;
+      for (const float v : votes) total += v;
+      if (!(total > 0.f)) continue;
+      for (float& v : votes) v /= total;
+      points.push_back({point, point->position(), votes});
+    }
+  });
+  return points;
+}
+
+// A uniform grid over the points for exact k-nearest-neighbour queries: the
+// cells around the query's are searched in growing cubic shells until the
+// k-th nearest distance found is within what the shells cover.
+class PointGrid {
+ public:
+  PointGrid(const std::vector<LabelledPoint>& points, int k) : points_(points) {
+    // Cell size: about k points per cell were the points spread evenly over
+    // the bulk of the map (the middle 90 % on each axis: points at infinity
+    // and strays would stretch the box), in as many dimensions as the bulk
+    // has: a map of one wall is flat, and its box's volume says nothing of
+    // how dense it is. The shell search is exact whatever the cell size;
+    // the size only decides how many points it looks at.
+    std::array<double, 3> extents{};
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<double> values;
+      values.reserve(points.size());
+      for (const auto& p : points) values.push_back(p.position[axis]);
+      const auto at = [&](double q) {
+        auto it = values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
+        std::nth_element(values.begin(), it, values.end());
+        return *it;
+      };
+      extents[static_cast<std::size_t>(axis)] = at(0.95) - at(0.05);
+    }
+    std::sort(extents.begin(), extents.end(), std::greater<>());
+    const double per_cell = static_cast<double>(std::max(1, k)) / static_cast<double>(points.size());
+    cell_ = std::max({std::cbrt(extents[0] * extents[1] * extents[2] * per_cell),
+                      std::sqrt(extents[0] * extents[1] * per_cell), extents[0] * per_cell, 1e-9});
+    for (std::size_t i = 0; i < points.size(); ++i) cells_[key(cell_of(points[i].position))].push_back(i);
+  }
+
+  // Indices of the k nearest points to point `query` (itself included),
+  // nearest first; ties by index. At most `max_shells` shells are searched,
+  // so an isolated point (far off the map) takes what lies within them.
+  std::vector<std::size_t> nearest(std::size_t query, std::size_t k) const {
+    constexpr int kMaxShells = 6;
+    const Eigen::Vector3d& q = points_[query].position;
+    const Eigen::Vector3i centre = cell_of(q);
+    candidates_.clear();
+    for (int shell = 0; shell <= kMaxShells; ++shell) {
+      visit_shell(centre, shell, [&](std::size_t j) {
+        candidates_.emplace_back((points_[j].position - q).squaredNorm(), j);
+      });
+      // Every point outside the shells searched lies at least shell * cell
+      // away: done when the k-th nearest found is closer.
+      if (candidates_.size() >= k) {
+        std::nth_element(candidates_.begin(), candidates_.begin() + static_cast<std::ptrdiff_t>(k - 1),
+                         candidates_.end());
+        const double reach = static_cast<double>(shell) * cell_;
+        if (candidates_[k - 1].first <= reach * reach) break;
+      }
+    }
+    const std::size_t n = std::min(k, candidates_.size());
+    std::partial_sort(candidates_.begin(), candidates_.begin() + static_cast<std::ptrdiff_t>(n), candidates_.end());
+    std::vector<std::size_t> result;
+    result.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) result.push_back(candidates_[i].second);
+    return result;
+  }
+
+ private:
+  Eigen::Vector3i cell_of(const Eigen::Vector3d& p) const {
+    // Clamped so that a point at infinity's huge coordinates stay integers.
+    const auto index = [&](double v) {
+      return static_cast<int>(std::clamp(std::floor(v / cell_), -1e6, 1e6));
+    };
+    return {index(p.x()), index(p.y()), index(p.z())};
+  }
+  static std::int64_t key(const Eigen::Vector3i& c) {
+    constexpr std::int64_t kSpan = 1 << 21;  // covers the clamped range
+    return ((static_cast<std::int64_t>(c.x()) + kSpan) * 2 * kSpan + (c.y() + kSpan)) * 2 * kSpan + (c.z() + kSpan);
+  }
+  // The cells at Chebyshev distance exactly `shell` from `centre`.
+  template <class F>
+  void visit_shell(const Eigen::Vector3i& centre, int shell, F&& f) const {
+    for (int dx = -shell; dx <= shell; ++dx)
+      for (int dy = -shell; dy <= shell; ++dy)
+        for (int dz = -shell; dz <= shell; ++dz) {
+          if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != shell) continue;
+          const auto it = cells_.find(key(centre + Eigen::Vector3i(dx, dy, dz)));
+          if (it == cells_.end()) continue;
+          for (const std::size_t j : it->second) f(j);
+        }
+  }
+
+  const std::vector<LabelledPoint>& points_;
+  double cell_ = 1.0;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells_;
+  mutable std::vector<std::pair<double, std::size_t>> candidates_;
+};
+
+}  // namespace
+
+std::size_t fuse_labels_with_neighbours(const Map& map, int neighbours) {
+  const std::vector<LabelledPoint> points = labelled_points(map);
+  if (points.empty()) return 0;
+  if (neighbours <= 0) {
+    for (const auto& p : points) p.point->set_label_from(p.shares);
+    return points.size();
+  }
+  const PointGrid grid(points, neighbours);
+  const std::size_t k = static_cast<std::size_t>(neighbours) + 1;  // the point itself and its neighbours
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ClassVotes sum{};
+    for (const std::size_t j : grid.nearest(i, k))
+      for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += points[j].shares[c];
+    points[i].point->set_label_from(sum);
+  }
+  return points.size();
+}
+
+}  // namespace facadeslam::semantics
