@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <functional>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -69,7 +69,7 @@ class PointGrid {
   }
 
   // Indices of the k nearest points to point `query` (itself included),
-  // nearest first; ties by index. At most `max_shells` shells are searched,
+  // nearest first; ties by index. At most kMaxShells shells are searched,
   // so an isolated point (far off the map) takes what lies within them.
   std::vector<std::size_t> nearest(std::size_t query, std::size_t k) const {
     constexpr int kMaxShells = 6;
