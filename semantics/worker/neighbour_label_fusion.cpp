@@ -101,13 +101,19 @@ class PointGrid {
   Eigen::Vector3i cell_of(const Eigen::Vector3d& p) const {
     // Clamped so that a point at infinity's huge coordinates stay integers.
     const auto index = [&](double v) {
-      return static_cast<int>(std::clamp(std::floor(v / cell_), -1e6, 1e6));
+      return static_cast<int>(std::clamp(std::floor(v / cell_), -kMaxCell, kMaxCell));
     };
     return {index(p.x()), index(p.y()), index(p.z())};
   }
-  static std::int64_t key(const Eigen::Vector3i& c) {
-    constexpr std::int64_t kSpan = 1 << 21;  // covers the clamped range
-    return ((static_cast<std::int64_t>(c.x()) + kSpan) * 2 * kSpan + (c.y() + kSpan)) * 2 * kSpan + (c.z() + kSpan);
+  // 21 bits per axis: the clamped cell index plus the shell reach, offset to
+  // be non-negative, so that three of them pack into 63 bits.
+  static constexpr double kMaxCell = 1e6;
+  static constexpr std::uint64_t kAxisBits = 21;
+  static constexpr std::int64_t kOffset = std::int64_t{1} << (kAxisBits - 1);
+  static_assert(kMaxCell + 16 < static_cast<double>(kOffset), "the offset must cover the clamped range and the shells");
+  static std::uint64_t key(const Eigen::Vector3i& c) {
+    const auto axis = [](int v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(v) + kOffset); };
+    return (axis(c.x()) << (2 * kAxisBits)) | (axis(c.y()) << kAxisBits) | axis(c.z());
   }
   // The cells at Chebyshev distance exactly `shell` from `centre`.
   template <class F>
@@ -124,7 +130,7 @@ class PointGrid {
 
   const std::vector<LabelledPoint>& points_;
   double cell_ = 1.0;
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
   mutable std::vector<std::pair<double, std::size_t>> candidates_;
 };
 
