@@ -116,6 +116,7 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   options.class_prior_weight = root.get_double("class_prior_weight", Range::closed(0, 1), options.class_prior_weight);
   options.context_scale = root.get_double("context_scale", Range::closed(0, 0.9), options.context_scale);
   options.label_neighbours = root.get_int("label_neighbours", Range::closed(0, 100), options.label_neighbours);
+  options.sky_only_at_infinity = root.get_bool("sky_only_at_infinity", options.sky_only_at_infinity);
   if (root.has("unreliable_classes")) {
     options.unreliable_classes.reset();
     for (const std::string& name : root.get_choices("unreliable_classes", class_names()))

@@ -6,6 +6,7 @@
 
 #include "core/map/map_point.hpp"
 #include "mapmaker/map_maker_options.hpp"
+#include "semantics/worker/neighbour_label_fusion.hpp"
 #include "slam/init/init_options.hpp"
 #include "tracker/tracker_options.hpp"
 
@@ -37,6 +38,9 @@ struct SemanticsOptions {
   // its own votes). street-walk's label accuracy 0.674 -> 0.714 with 15. The
   // tracker keeps weighing points by their own votes (MapPoint::own_label).
   int label_neighbours = 15;
+  // ... and a point two keyframes measure at a finite depth is not sky
+  // (MapLabelOptions::sky_only_at_infinity).
+  bool sky_only_at_infinity = true;
   // The tracker does not search points labelled with one of these classes at
   // `min_confidence` or more (moving or unstable things). Default: car,
   // vegetation, sky, various.
@@ -58,6 +62,9 @@ struct SemanticsOptions {
 
   // prior^weight per class, scaled so the largest is 1.
   ClassVotes class_weights() const;
+  semantics::MapLabelOptions map_labels() const {
+    return {.neighbours = label_neighbours, .sky_only_at_infinity = sky_only_at_infinity};
+  }
 };
 
 // When the map is given up and start-up begins again (ORB-SLAM resets a

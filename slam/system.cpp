@@ -36,7 +36,7 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
   auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model), queue, options.class_weights());
   if (!options.grey_model.empty()) worker->use_grey_model(load(options.grey_model));
   worker->use_context_scale(options.context_scale);
-  worker->use_neighbour_fusion(map, options.label_neighbours);
+  worker->use_map_labels(map, options.map_labels());
   return worker;
 }
 
@@ -90,7 +90,7 @@ void System::load_map(const std::filesystem::path& path) {
     fail_file(path, "the map has no keyframes or points to track against");
   // The file keeps each point's own votes; its labels are those fused with
   // the neighbours', as when the map was made.
-  semantics::fuse_labels_with_neighbours(map_, options_.semantics.label_neighbours);
+  semantics::fuse_labels_with_neighbours(map_, options_.semantics.map_labels());
   // Nothing is known of the camera yet: the tracker starts lost and relocalises.
   start_tracking(map_.snapshot_keyframes().back().T_c_w, 0, Eigen::Matrix<double, 6, 1>::Zero());
   tracker_.mark_lost();

@@ -16,13 +16,25 @@ struct LabelledPoint {
   std::shared_ptr<MapPoint> point;
   Eigen::Vector3d position;
   ClassVotes shares;  // the point's votes scaled to sum to 1
+  bool finite = false;  // measured by two keyframes, nearer than kFarDepthRatio x its source's mean depth
 };
+
+bool at_finite_depth(const MapView& view, const MapPoint& point, int keyframes_measuring) {
+  if (keyframes_measuring < 2) return false;
+  const auto source = view.keyframe(point.source().keyframe_id);
+  if (!source) return false;
+  const double depth = (source->T_c_w() * point.position()).z();
+  return depth > 0.0 && depth < kFarDepthRatio * source->mean_depth();
+}
 
 // The good points with votes, their positions read under the map's lock (the
 // map maker moves them), ordered by id.
 std::vector<LabelledPoint> labelled_points(const Map& map) {
   std::vector<LabelledPoint> points;
   map.read([&](const MapView& view) {
+    std::unordered_map<MapPoint::Id, int> keyframes_measuring;
+    for (const auto& [kf_id, keyframe] : view.keyframes())
+      for (const auto& [point_id, m] : keyframe->measurements()) ++keyframes_measuring[point_id];
     points.reserve(view.points().size());
     for (const auto& [id, point] : view.points()) {
       if (point->is_bad()) continue;
@@ -31,10 +43,26 @@ std::vector<LabelledPoint> labelled_points(const Map& map) {
       for (const float v : votes) total += v;
       if (!(total > 0.f)) continue;
       for (float& v : votes) v /= total;
-      points.push_back({point, point->position(), votes});
+      const auto measured = keyframes_measuring.find(id);
+      const int measuring = measured == keyframes_measuring.end() ? 0 : measured->second;
+      points.push_back({point, point->position(), votes, at_finite_depth(view, *point, measuring)});
     }
   });
   return points;
+}
+
+// The point's label from the evidence, sky left out where the point cannot
+// be sky (unless nothing else has votes).
+void set_map_label(const LabelledPoint& p, ClassVotes evidence, const MapLabelOptions& options) {
+  constexpr std::size_t kSky = 6;
+  static_assert(kSemanticClasses[kSky].name == "sky");
+  if (options.sky_only_at_infinity && p.finite) {
+    float others = 0.f;
+    for (std::size_t c = 0; c < evidence.size(); ++c)
+      if (c != kSky) others += evidence[c];
+    if (others > 0.f) evidence[kSky] = 0.f;
+  }
+  p.point->set_label_from(evidence);
 }
 
 // A uniform grid over the points for exact k-nearest-neighbour queries: the
@@ -136,20 +164,20 @@ class PointGrid {
 
 }  // namespace
 
-std::size_t fuse_labels_with_neighbours(const Map& map, int neighbours) {
+std::size_t fuse_labels_with_neighbours(const Map& map, const MapLabelOptions& options) {
   const std::vector<LabelledPoint> points = labelled_points(map);
   if (points.empty()) return 0;
-  if (neighbours <= 0) {
-    for (const auto& p : points) p.point->set_label_from(p.shares);
+  if (options.neighbours <= 0) {
+    for (const auto& p : points) set_map_label(p, p.shares, options);
     return points.size();
   }
-  const PointGrid grid(points, neighbours);
-  const std::size_t k = static_cast<std::size_t>(neighbours) + 1;  // the point itself and its neighbours
+  const PointGrid grid(points, options.neighbours);
+  const std::size_t k = static_cast<std::size_t>(options.neighbours) + 1;  // the point itself and its neighbours
   for (std::size_t i = 0; i < points.size(); ++i) {
     ClassVotes sum{};
     for (const std::size_t j : grid.nearest(i, k))
       for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += points[j].shares[c];
-    points[i].point->set_label_from(sum);
+    set_map_label(points[i], sum, options);
   }
   return points.size();
 }

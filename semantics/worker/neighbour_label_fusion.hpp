@@ -18,10 +18,26 @@
 
 namespace facadeslam::semantics {
 
+struct MapLabelOptions {
+  // Nearest labelled map points whose vote shares join each point's own
+  // (0: each point's own votes).
+  int neighbours = 15;
+  // Sky lies at infinity: a point that two keyframes measure at a finite
+  // depth (its rays meet, as the epipolar search and the initialisation
+  // require; under kFarDepthRatio x its source keyframe's mean depth) is not
+  // sky, so its sky votes are left out of its label. A point only its source
+  // measures (a depth-prior point, placed at its neighbours' depth) and a
+  // point bundle adjustment pushed far off keep them.
+  bool sky_only_at_infinity = true;
+};
+
+// A point this many times its source keyframe's mean scene depth away counts
+// as at infinity.
+inline constexpr double kFarDepthRatio = 20.0;
+
 // Relabels the map's good, labelled points (under the map's shared lock for
-// the positions; labels are atomics). Returns how many points it labelled.
-// `neighbours` 0 gives each point the label of its own votes. Deterministic:
-// ties in distance go to the lower point id.
-std::size_t fuse_labels_with_neighbours(const Map& map, int neighbours);
+// the positions and measurements; labels are atomics). Returns how many
+// points it labelled. Deterministic: ties in distance go to the lower point id.
+std::size_t fuse_labels_with_neighbours(const Map& map, const MapLabelOptions& options);
 
 }  // namespace facadeslam::semantics

@@ -12,7 +12,6 @@
 
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
-#include "semantics/worker/neighbour_label_fusion.hpp"
 
 namespace facadeslam::semantics {
 
@@ -55,10 +54,11 @@ void SemanticWorker::use_context_scale(double scale) {
   context_scale_ = scale;
 }
 
-void SemanticWorker::use_neighbour_fusion(const Map& map, int neighbours) {
-  if (neighbours < 0) throw Error("semantic worker: a number of neighbours >= 0 (0 = none), not " + std::to_string(neighbours));
+void SemanticWorker::use_map_labels(const Map& map, const MapLabelOptions& options) {
+  if (options.neighbours < 0)
+    throw Error("semantic worker: a number of neighbours >= 0 (0 = none), not " + std::to_string(options.neighbours));
   fusion_map_ = &map;
-  fusion_neighbours_ = neighbours;
+  fusion_options_ = options;
 }
 
 SemanticWorker::~SemanticWorker() { stop(); }
@@ -134,9 +134,9 @@ void SemanticWorker::label(const KeyFramePoints& job) {
 }
 
 void SemanticWorker::fuse() {
-  if (fusion_map_ == nullptr || fusion_neighbours_ == 0) return;
+  if (fusion_map_ == nullptr || (fusion_options_.neighbours == 0 && !fusion_options_.sky_only_at_infinity)) return;
   const Stopwatch watch;
-  fuse_labels_with_neighbours(*fusion_map_, fusion_neighbours_);
+  fuse_labels_with_neighbours(*fusion_map_, fusion_options_);
   // Part of the last keyframe's work in the figures.
   std::lock_guard lock(stats_mutex_);
   if (!stats_.keyframe_ms.empty()) stats_.keyframe_ms.back() += watch.elapsed_ms();

@@ -22,6 +22,7 @@
 #include "core/map/map.hpp"
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
+#include "semantics/worker/neighbour_label_fusion.hpp"
 
 namespace facadeslam::semantics {
 
@@ -55,10 +56,10 @@ class SemanticWorker {
   // 21-pixel patch at a window's corner does not have. Call before start().
   void use_context_scale(double scale);
   // After each round of keyframes, give every labelled point of `map` the
-  // label of its votes fused with its `neighbours` nearest points' (0 = its
-  // own votes; neighbour_label_fusion.hpp). Call before start(); `map` must
-  // outlive the worker.
-  void use_neighbour_fusion(const Map& map, int neighbours);
+  // label of its votes fused with its nearest points' and the geometric cue
+  // (neighbour_label_fusion.hpp). Call before start(); `map` must outlive
+  // the worker.
+  void use_map_labels(const Map& map, const MapLabelOptions& options);
   ~SemanticWorker();
   SemanticWorker(const SemanticWorker&) = delete;
   SemanticWorker& operator=(const SemanticWorker&) = delete;
@@ -97,7 +98,7 @@ class SemanticWorker {
   ClassVotes class_weights_;
   double context_scale_ = 0.0;
   const Map* fusion_map_ = nullptr;
-  int fusion_neighbours_ = 0;
+  MapLabelOptions fusion_options_{.neighbours = 0, .sky_only_at_infinity = false};
   KeyFramePointsQueue& queue_;
   std::thread thread_;
   mutable std::mutex stats_mutex_;

@@ -129,6 +129,8 @@ TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_EQ(shipped.class_prior, defaults.class_prior);
   EXPECT_EQ(shipped.class_prior_weight, defaults.class_prior_weight);
   EXPECT_EQ(shipped.context_scale, defaults.context_scale);
+  EXPECT_EQ(shipped.label_neighbours, defaults.label_neighbours);
+  EXPECT_EQ(shipped.sky_only_at_infinity, defaults.sky_only_at_infinity);
   EXPECT_EQ(shipped.unreliable_classes, defaults.unreliable_classes);
   EXPECT_EQ(shipped.min_confidence, defaults.min_confidence);
   EXPECT_EQ(shipped.min_reliable_points, defaults.min_reliable_points);

@@ -228,7 +228,7 @@ TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
 TEST(System, ALoadedMapHasTheLabelsItWasSavedWith) {
   Map saved;
   test::build_test_map(saved, 20);
-  semantics::fuse_labels_with_neighbours(saved, 3);
+  semantics::fuse_labels_with_neighbours(saved, {.neighbours = 3, .sky_only_at_infinity = true});
   std::size_t fused_differently = 0;
   for (const auto& p : saved.points()) fused_differently += p->label().label != p->own_label().label;
   ASSERT_GT(fused_differently, 0u) << "the fixture must have labels that the neighbours change";
