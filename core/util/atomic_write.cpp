@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "core/util/error.hpp"
+#include "core/util/interrupt.hpp"
 
 namespace facadeslam {
 namespace {
@@ -49,6 +50,8 @@ void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(const std::filesystem::path& tmp)>& write) {
   ensure_parent(path);
   const auto tmp = temporary_beside(path);
+  // A second Ctrl-C while the file is written removes it (interrupt.hpp).
+  const AbortCleanupFile cleanup(tmp);
   try {
     write(tmp);
     if (!std::filesystem::exists(tmp)) fail_file(path, "the writer produced no output");

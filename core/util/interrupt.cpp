@@ -1,5 +1,7 @@
 #include "core/util/interrupt.hpp"
 
+#include <array>
+#include <atomic>
 #include <csignal>
 #include <cstring>
 #include <dirent.h>
@@ -15,6 +17,15 @@ struct sigaction g_previous_int {}, g_previous_term {};
 // The abort clean-up folder: an absolute path, valid while g_cleanup_set.
 char g_cleanup[4096];
 volatile std::sig_atomic_t g_cleanup_set = 0;
+// The files being written: a slot is free (0), being filled (1) or holds an
+// absolute path the handler may remove (2). Lock-free atomics, so that the
+// handler can read them.
+struct CleanupFileSlot {
+  std::atomic<int> state{0};
+  char path[4096];
+};
+static_assert(std::atomic<int>::is_always_lock_free);
+std::array<CleanupFileSlot, kAbortCleanupFiles> g_cleanup_files;
 // Inside AbortDeferral: the signal that came meanwhile (0: none).
 volatile std::sig_atomic_t g_deferring = 0, g_deferred_signal = 0;
 
@@ -61,6 +72,8 @@ extern "C" void on_interrupt(int signal) {
       g_deferred_signal = signal;
       return;
     }
+    for (CleanupFileSlot& slot : g_cleanup_files)
+      if (slot.state.load(std::memory_order_acquire) == 2) ::unlink(slot.path);
     if (g_cleanup_set) remove_tree(AT_FDCWD, g_cleanup, 0);
     die_of(signal);
   }
@@ -93,6 +106,25 @@ void set_abort_cleanup_folder(const std::filesystem::path& folder) {
   if (ec || absolute.size() >= sizeof g_cleanup) return;
   std::memcpy(g_cleanup, absolute.c_str(), absolute.size() + 1);
   g_cleanup_set = 1;
+}
+
+AbortCleanupFile::AbortCleanupFile(const std::filesystem::path& file) {
+  std::error_code ec;
+  const std::string absolute = std::filesystem::absolute(file, ec).string();
+  if (ec || absolute.size() >= sizeof(CleanupFileSlot::path)) return;
+  for (int i = 0; i < kAbortCleanupFiles; ++i) {
+    CleanupFileSlot& slot = g_cleanup_files[static_cast<std::size_t>(i)];
+    int free = 0;
+    if (!slot.state.compare_exchange_strong(free, 1, std::memory_order_acquire)) continue;
+    std::memcpy(slot.path, absolute.c_str(), absolute.size() + 1);
+    slot.state.store(2, std::memory_order_release);
+    slot_ = i;
+    return;
+  }
+}
+
+AbortCleanupFile::~AbortCleanupFile() {
+  if (slot_ >= 0) g_cleanup_files[static_cast<std::size_t>(slot_)].state.store(0, std::memory_order_release);
 }
 
 AbortDeferral::AbortDeferral() {
