@@ -28,13 +28,15 @@ bool at_finite_depth(const MapView& view, const MapPoint& point, int keyframes_m
 }
 
 // The good points with votes, their positions read under the map's lock (the
-// map maker moves them), ordered by id.
-std::vector<LabelledPoint> labelled_points(const Map& map) {
+// map maker moves them), ordered by id; `finite` only when `depths_needed`
+// (the sky cue: it counts every keyframe's measurements).
+std::vector<LabelledPoint> labelled_points(const Map& map, bool depths_needed) {
   std::vector<LabelledPoint> points;
   map.read([&](const MapView& view) {
     std::unordered_map<MapPoint::Id, int> keyframes_measuring;
-    for (const auto& [kf_id, keyframe] : view.keyframes())
-      for (const auto& [point_id, m] : keyframe->measurements()) ++keyframes_measuring[point_id];
+    if (depths_needed)
+      for (const auto& [kf_id, keyframe] : view.keyframes())
+        for (const auto& [point_id, m] : keyframe->measurements()) ++keyframes_measuring[point_id];
     points.reserve(view.points().size());
     for (const auto& [id, point] : view.points()) {
       if (point->is_bad()) continue;
@@ -100,7 +102,6 @@ class PointGrid {
   // nearest first; ties by index. At most kMaxShells shells are searched,
   // so an isolated point (far off the map) takes what lies within them.
   std::vector<std::size_t> nearest(std::size_t query, std::size_t k) const {
-    constexpr int kMaxShells = 6;
     const Eigen::Vector3d& q = points_[query].position;
     const Eigen::Vector3i centre = cell_of(q);
     candidates_.clear();
@@ -135,10 +136,12 @@ class PointGrid {
   }
   // 21 bits per axis: the clamped cell index plus the shell reach, offset to
   // be non-negative, so that three of them pack into 63 bits.
+  static constexpr int kMaxShells = 6;  // see nearest()
   static constexpr double kMaxCell = 1e6;
   static constexpr std::uint64_t kAxisBits = 21;
   static constexpr std::int64_t kOffset = std::int64_t{1} << (kAxisBits - 1);
-  static_assert(kMaxCell + 16 < static_cast<double>(kOffset), "the offset must cover the clamped range and the shells");
+  static_assert(kMaxCell + kMaxShells < static_cast<double>(kOffset),
+                "the offset must cover the clamped range and the shells");
   static std::uint64_t key(const Eigen::Vector3i& c) {
     const auto axis = [](int v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(v) + kOffset); };
     return (axis(c.x()) << (2 * kAxisBits)) | (axis(c.y()) << kAxisBits) | axis(c.z());
@@ -165,7 +168,7 @@ class PointGrid {
 }  // namespace
 
 std::size_t fuse_labels_with_neighbours(const Map& map, const MapLabelOptions& options) {
-  const std::vector<LabelledPoint> points = labelled_points(map);
+  const std::vector<LabelledPoint> points = labelled_points(map, options.sky_only_at_infinity);
   if (points.empty()) return 0;
   if (options.neighbours <= 0) {
     for (const auto& p : points) set_map_label(p, p.shares, options);
