@@ -7,7 +7,8 @@
 namespace facadeslam {
 
 MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adjuster,
-                       std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection_options) {
+                       std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection_options,
+                       const PointWeight& weight_of) {
   MapBaReport report;
   const auto keyframes = map.keyframes();
   if (keyframes.size() < 2) return report;
@@ -49,7 +50,9 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
     for (const auto& [point_id, m] : kf->measurements()) {
       const auto pi = point_index.find(point_id);
       if (pi == point_index.end()) continue;
-      problem.observations.push_back({kf_index.at(kf->id()), pi->second, m.pixel, m.level});
+      const double weight = weight_of ? weight_of(*point_of[pi->second]) : 1.0;
+      if (!(weight > 0.0)) continue;  // left out
+      problem.observations.push_back({kf_index.at(kf->id()), pi->second, m.pixel, m.level, weight});
       obs_of.emplace_back(kf.get(), point_id);
     }
   if (!newest && problem.keyframes.size() >= 2) {

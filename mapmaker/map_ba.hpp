@@ -7,6 +7,7 @@
 // publishes its last accepted iterate too (report.ba.aborted says so).
 //
 // Map maker thread only (the only writer of poses, points and measurements).
+#include <functional>
 #include <optional>
 
 #include "core/camera/camera.hpp"
@@ -24,7 +25,11 @@ struct MapBaReport {
 
 // Local BA around `newest` (with `selection` neighbours) when given,
 // otherwise a global BA (first keyframe fixed, scale anchored on the second).
+// `weight_of` gives each point's measurements their weight in the cost
+// (none: 1 for all).
+using PointWeight = std::function<double(const MapPoint&)>;
 MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adjuster,
-                       std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection = {});
+                       std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection = {},
+                       const PointWeight& weight_of = {});
 
 }  // namespace facadeslam

@@ -81,7 +81,7 @@ std::optional<SE3d> MapMaker::initialise(const InitialViews& views) {
     }
 
   const Stopwatch t0;
-  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt);
+  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt, {}, ba_point_weight());
   remove_outlier_points();
   update_depth_stats(*kf0);
   update_depth_stats(*kf1);
@@ -180,7 +180,8 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   }
 
   const MapBaReport ba =
-      adjust_map(map_, camera_, BundleAdjuster(options_.local_ba), kf->id(), options_.local_ba_selection);
+      adjust_map(map_, camera_, BundleAdjuster(options_.local_ba), kf->id(), options_.local_ba_selection,
+                 ba_point_weight());
   remove_outlier_points();
   update_depth_stats(*kf);
   {
@@ -315,7 +316,7 @@ void MapMaker::run_global_ba() {
   options.on_iteration = [this](int) {
     if (!queue_.empty()) abort_global_ba_ = true;
   };
-  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options), std::nullopt);
+  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options), std::nullopt, {}, ba_point_weight());
   std::lock_guard lock(stats_mutex_);
   if (ba.ba.aborted) {
     ++stats_.global_ba_aborted;
@@ -404,6 +405,13 @@ void MapMaker::run() {
       remove_outlier_points();
     }
   }
+}
+
+PointWeight MapMaker::ba_point_weight() const {
+  if (!options_.ba_down_weighted.any() || options_.ba_label_weight == 1.0) return {};
+  return [this](const MapPoint& point) {
+    return options_.ba_down_weighted.contains(point) ? options_.ba_label_weight : 1.0;
+  };
 }
 
 }  // namespace facadeslam

@@ -24,6 +24,7 @@
 #include "core/map/keyframe_candidate.hpp"
 #include "core/map/keyframe_points.hpp"
 #include "core/map/map.hpp"
+#include "mapmaker/map_ba.hpp"
 #include "mapmaker/map_maker_options.hpp"
 
 namespace facadeslam {
@@ -94,6 +95,9 @@ class MapMaker {
   // first (the gauge of every bundle adjustment) nor `newest`.
   void cull_redundant_keyframes(KeyFrame::Id newest);
   void update_depth_stats(KeyFrame& keyframe);
+  // Each point's weight in bundle adjustment (MapMakerOptions::ba_down_weighted);
+  // none when labels are ignored.
+  PointWeight ba_point_weight() const;
   // The keyframe `keyframe` searches for new points against (epipolar_partner.hpp).
   std::shared_ptr<KeyFrame> epipolar_partner(const KeyFrame& keyframe) const;
   // Queues the keyframe's measurements (only those of `only`'s points, if

@@ -3,6 +3,7 @@
 // `mapmaker:` section of configs/slam.yaml.
 #include <array>
 
+#include "core/map/unreliable_labels.hpp"
 #include "mapmaker/ba/ba_selection.hpp"
 #include "mapmaker/ba/bundle_adjuster.hpp"
 #include "mapmaker/depth_prior_points.hpp"
@@ -62,6 +63,11 @@ struct MapMakerOptions {
   // The tracker searches for each point's patch as the newest keyframe that
   // measured it saw it (MapPoint::view), not as its source keyframe did.
   bool newest_view_templates = true;
+  // Label-aware bundle adjustment (set from configs/semantics.yaml when
+  // semantics are on): the measurements of points with these labels count
+  // `ba_label_weight` times as much in the cost as the others (0: left out).
+  UnreliableLabels ba_down_weighted;  // no classes: labels are ignored
+  double ba_label_weight = 1.0;
 };
 
 }  // namespace facadeslam

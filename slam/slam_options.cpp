@@ -103,6 +103,18 @@ ClassVotes SemanticsOptions::class_weights() const {
   return weights;
 }
 
+namespace {
+
+// A list of class names, as a set; `fallback` when the key is absent.
+ClassSet read_classes(const ConfigNode& node, const std::string& key, ClassSet fallback) {
+  if (!node.has(key)) return fallback;
+  ClassSet classes;
+  for (const std::string& name : node.get_choices(key, class_names())) classes.set(*semantic_class_by_name(name));
+  return classes;
+}
+
+}  // namespace
+
 SemanticsOptions load_semantics_options(const std::filesystem::path& path, SemanticsOptions options) {
   const ConfigNode root = ConfigNode::load_file(path);
   options.enabled = root.get_bool("enabled", options.enabled);
@@ -117,11 +129,8 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   options.context_scale = root.get_double("context_scale", Range::closed(0, 0.9), options.context_scale);
   options.label_neighbours = root.get_int("label_neighbours", Range::closed(0, 100), options.label_neighbours);
   options.sky_only_at_infinity = root.get_bool("sky_only_at_infinity", options.sky_only_at_infinity);
-  if (root.has("unreliable_classes")) {
-    options.unreliable_classes.reset();
-    for (const std::string& name : root.get_choices("unreliable_classes", class_names()))
-      options.unreliable_classes.set(*semantic_class_by_name(name));
-  }
+  options.unreliable_classes = read_classes(root, "unreliable_classes", options.unreliable_classes);
+  options.ba_unreliable_classes = read_classes(root, "ba_unreliable_classes", options.ba_unreliable_classes);
   options.min_confidence = root.get_double("min_confidence", Range::closed(0, 1), options.min_confidence);
   options.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), options.unreliable_weight);
   options.min_reliable_points =

@@ -44,7 +44,7 @@ struct SemanticsOptions {
   // The tracker does not search points labelled with one of these classes at
   // `min_confidence` or more (moving or unstable things). Default: car,
   // vegetation, sky, various.
-  std::bitset<kSemanticClasses.size()> unreliable_classes{(1u << 2) | (1u << 7) | (1u << 6) | (1u << 0)};
+  ClassSet unreliable_classes{(1u << 2) | (1u << 7) | (1u << 6) | (1u << 0)};
   double min_confidence = 0.5;
   // Their weight in the pose update: 0 leaves them out of the search. Down-
   // weighting is as good as leaving out where things move (street-dynamic
@@ -59,6 +59,16 @@ struct SemanticsOptions {
   // down-weighting its parked cars and roadside trees in the coarse stage
   // lost 7-8 frames with some grey models and weights; with 2 px, none.
   double unreliable_verify_px = 2.0;
+  // The map maker's bundle adjustment weighs the points of these classes
+  // (own label, min_confidence) by unreliable_weight too. Cars only: a car's
+  // points move as one body, so their measurements agree on a wrong motion
+  // that a robust loss does not reject, while the tracker weighs them down
+  // (street-drive, with labels, tracker seeds 1-3: 1.90 / 1.01 / 0.37 % of
+  // its path without this, 0.030 / 0.063 / 0.037 % with it; without labels
+  // 0.019 %). With vegetation too the walk's trees, which stand still,
+  // lost weight and street-walk's map and labels changed (0.713 -> 0.682):
+  // docs/benchmarks.md, session 24.
+  ClassSet ba_unreliable_classes{1u << 2};
 
   // prior^weight per class, scaled so the largest is 1.
   ClassVotes class_weights() const;

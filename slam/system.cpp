@@ -41,11 +41,14 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
 }
 
 // With labels coming, the tracker weighs points of unreliable classes down
-// (or leaves them out: SemanticsOptions::unreliable_weight).
+// (or leaves them out: SemanticsOptions::unreliable_weight), and bundle
+// adjustment those of SemanticsOptions::ba_unreliable_classes.
 SlamOptions with_label_aware_tracking(SlamOptions options) {
   if (options.semantics.enabled) {
-    options.tracker.unreliable_classes = options.semantics.unreliable_classes;
-    options.tracker.unreliable_min_confidence = static_cast<float>(options.semantics.min_confidence);
+    const auto min_confidence = static_cast<float>(options.semantics.min_confidence);
+    options.tracker.unreliable = {options.semantics.unreliable_classes, min_confidence};
+    options.mapmaker.ba_down_weighted = {options.semantics.ba_unreliable_classes, min_confidence};
+    options.mapmaker.ba_label_weight = options.semantics.unreliable_weight;
     options.tracker.min_reliable_points = options.semantics.min_reliable_points;
     options.tracker.unreliable_weight = options.semantics.unreliable_weight;
     options.tracker.unreliable_verify_px = options.semantics.unreliable_verify_px;

@@ -62,12 +62,7 @@ void Tracker::reset() {
   descriptor_relocaliser_.clear();
 }
 
-bool Tracker::unreliable(const MapPoint& point) const {
-  if (options_.unreliable_classes.none()) return false;
-  const SemanticLabel label = point.own_label();  // see MapPoint::own_label
-  return label.label < options_.unreliable_classes.size() && options_.unreliable_classes.test(label.label) &&
-         label.confidence >= options_.unreliable_min_confidence;
-}
+bool Tracker::unreliable(const MapPoint& point) const { return options_.unreliable.contains(point); }
 
 std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
                                                      const SE3d& T_c_w, int* dropped) const {

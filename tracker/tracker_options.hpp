@@ -1,11 +1,10 @@
 #pragma once
 // Every tunable of the tracker, with PTAM's values as defaults. Loaded from
 // the `tracker:` section of configs/slam.yaml (slam/slam_options.hpp).
-#include <bitset>
 #include <cstdint>
 
 #include "core/image/image_pyramid.hpp"
-#include "core/map/semantic_classes.hpp"
+#include "core/map/unreliable_labels.hpp"
 #include "core/patch/patch_search.hpp"
 #include "core/patch/patch_warp.hpp"
 #include "tracker/pose_update.hpp"
@@ -97,11 +96,10 @@ struct TrackerOptions {
   int keyframe_revisit_age_frames = 60;
 
   // Label-aware tracking (set from configs/semantics.yaml when semantics are
-  // on): a point labelled with one of these classes at this confidence or
-  // more is neither searched nor used for the pose and the keyframe
-  // decision: cars drive off, trees sway, the sky has no depth.
-  std::bitset<kSemanticClasses.size()> unreliable_classes;  // none: labels are ignored
-  float unreliable_min_confidence = 0.5f;
+  // on): a point with one of these labels (its own label's class, at the
+  // minimum confidence or more) is weighed down in the pose update, or left
+  // out of the search: cars drive off, trees sway, the sky has no depth.
+  UnreliableLabels unreliable;  // no classes: labels are ignored
   // Their weight in the pose update (Tukey's times this); 0 leaves them out
   // of the search altogether ...
   double unreliable_weight = 0.0;

@@ -3,6 +3,7 @@
 // semantic worker and the evaluation: LabelMeFacade's nine classes with its
 // label colours (RGB), in this id order.
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -26,6 +27,9 @@ inline constexpr std::array<SemanticClass, 9> kSemanticClasses{{
     {7, "vegetation", 0, 128, 0},
     {8, "window", 0, 0, 128},
 }};
+
+// A set of classes, by id.
+using ClassSet = std::bitset<kSemanticClasses.size()>;
 
 // Colour used for points that carry no label yet.
 inline constexpr SemanticClass kUnlabelledClass{255, "unlabelled", 200, 200, 200};

@@ -60,6 +60,8 @@ void validate_ba_problem(const BaProblem& problem) {
     if (obs.level < 0 || obs.level > kMaxBaLevel)
       fail_problem(name + " has pyramid level " + std::to_string(obs.level) + ", expected 0.." +
            std::to_string(kMaxBaLevel));
+    if (!(obs.weight > 0.0 && obs.weight <= 1.0))
+      fail_problem(name + " has weight " + std::to_string(obs.weight) + ", expected in (0, 1]");
     any_fixed_block = any_fixed_block || problem.keyframes[obs.keyframe].fixed || problem.points[obs.point].fixed;
   }
   // Without a single fixed block the whole map can slide, turn and scale

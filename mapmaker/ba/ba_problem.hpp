@@ -45,6 +45,7 @@ struct BaObservation {
   std::size_t point = 0;         // index into BaProblem::points
   Eigen::Vector2d pixel{0, 0};   // measured position in LEVEL-0 pixels
   int level = 0;                 // pyramid level it was found at: sigma = 2^level px
+  double weight = 1.0;           // its share of the cost (the loss times this), in (0, 1]
 };
 
 // Keeps |centre(keyframes[keyframe]) - centre(keyframes[reference])| at its
@@ -68,10 +69,10 @@ struct BaProblem {
 inline constexpr int kMaxBaLevel = 15;
 
 // Throws Error naming the first offending element unless: every observation
-// indexes an existing keyframe and point, has a finite pixel and a level in
-// [0, kMaxBaLevel]; every pose and point is finite; and the scale anchor, if
-// any, names two distinct keyframes, the reference fixed, the other free,
-// with distinct centres.
+// indexes an existing keyframe and point, has a finite pixel, a level in
+// [0, kMaxBaLevel] and a weight in (0, 1]; every pose and point is finite;
+// and the scale anchor, if any, names two distinct keyframes, the reference
+// fixed, the other free, with distinct centres.
 void validate_ba_problem(const BaProblem& problem);
 
 }  // namespace facadeslam

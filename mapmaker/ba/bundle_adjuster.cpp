@@ -119,14 +119,20 @@ struct ParameterBlocks {
 
 template <class Model>
 void add_residuals(ceres::Problem& ceres_problem, const BaProblem& problem, const Model& model,
-                   ceres::LossFunction* loss, ParameterBlocks& blocks) {
+                   ceres::LossFunction* loss, ParameterBlocks& blocks,
+                   std::vector<std::unique_ptr<ceres::LossFunction>>& scaled_losses) {
   for (const BaObservation& obs : problem.observations) {
     // A residual between two constant blocks cannot change: leave it out of
     // the solve (it still counts in the RMS and the outlier test).
     if (problem.keyframes[obs.keyframe].fixed && problem.points[obs.point].fixed) continue;
     auto* cost = new ceres::AutoDiffCostFunction<ReprojectionCost<Model>, 2, kSe3ParamSize, 3>(
         new ReprojectionCost<Model>(model, obs.pixel, obs.level));
-    ceres_problem.AddResidualBlock(cost, loss, blocks.poses[obs.keyframe].data(), blocks.points[obs.point].data());
+    ceres::LossFunction* obs_loss = loss;
+    if (obs.weight != 1.0) {
+      scaled_losses.push_back(std::make_unique<ceres::ScaledLoss>(loss, obs.weight, ceres::DO_NOT_TAKE_OWNERSHIP));
+      obs_loss = scaled_losses.back().get();
+    }
+    ceres_problem.AddResidualBlock(cost, obs_loss, blocks.poses[obs.keyframe].data(), blocks.points[obs.point].data());
     blocks.pose_used[obs.keyframe] = 1;
     blocks.point_used[obs.point] = 1;
   }
@@ -180,6 +186,7 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
 
   ParameterBlocks blocks(problem);
   const std::unique_ptr<ceres::LossFunction> loss = make_loss(options_.loss, options_.loss_scale);
+  std::vector<std::unique_ptr<ceres::LossFunction>> scaled_losses;  // per weighted observation
   SE3Manifold se3_manifold;
   std::unique_ptr<ceres::Manifold> anchor_manifold;
 
@@ -187,7 +194,7 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem ceres_problem(problem_options);
-  camera.visit([&](const auto& model) { add_residuals(ceres_problem, problem, model, loss.get(), blocks); });
+  camera.visit([&](const auto& model) { add_residuals(ceres_problem, problem, model, loss.get(), blocks, scaled_losses); });
 
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   for (std::size_t i = 0; i < problem.points.size(); ++i) {

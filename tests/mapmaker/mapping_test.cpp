@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -156,6 +157,39 @@ TEST_F(PlaneKeyFrames, AbortedBundleAdjustmentStillPublishesItsProgress) {
   // The map holds the aborted solve's last iterate, not the input.
   EXPECT_NEAR(map_rms_px(), report.ba.final_rms_px, 1e-6);
   EXPECT_LT(map_rms_px(), 0.5 * before) << "the aborted solve's progress was dropped";
+}
+
+// Label-aware bundle adjustment: `weight_of` weighs each point's
+// measurements; a weight of 0 leaves them out (the point stays where it is),
+// any other keeps them in the solve.
+TEST_F(PlaneKeyFrames, BundleAdjustmentLeavesOutPointsOfWeightZero) {
+  map_.add(epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}));
+  ASSERT_GT(map_.point_count(), 100u);
+  const auto points = map_.points();
+  map_.update([&](MapEditor& edit) {
+    for (const auto& p : points) {
+      PointGeometry g = p->geometry();
+      g.p_w *= 1.0 + 0.05 / g.p_w.norm();
+      edit.set_geometry(*p, g);
+    }
+  });
+  std::map<MapPoint::Id, Eigen::Vector3d> before;
+  for (const auto& p : points) before[p->id()] = p->position();
+  const auto left_out = [](const MapPoint& p) { return p.id() % 2 == 0; };
+  const MapBaReport report = adjust_map(map_, camera_, BundleAdjuster(), std::nullopt, {},
+                                        [&](const MapPoint& p) { return left_out(p) ? 0.0 : 0.5; });
+  std::size_t kept = 0, moved = 0;
+  for (const auto& p : points) {
+    if (left_out(*p)) {
+      EXPECT_EQ(p->position(), before[p->id()]) << "point " << p->id() << " was left out but moved";
+    } else {
+      ++kept;
+      moved += p->position() != before[p->id()];
+    }
+  }
+  EXPECT_EQ(report.observations, 2 * kept);  // every point has two measurements, one per keyframe
+  EXPECT_EQ(moved, kept);
+  EXPECT_LT(report.ba.final_rms_px, report.ba.initial_rms_px);
 }
 
 }  // namespace

@@ -244,8 +244,8 @@ class LabelledPlaneTracking : public PlaneTracking {
   }
   static TrackerOptions label_aware(double verify_px) {
     TrackerOptions options;
-    options.unreliable_classes.set(2);
-    options.unreliable_min_confidence = 0.5f;
+    options.unreliable.classes.set(2);
+    options.unreliable.min_confidence = 0.5f;
     options.unreliable_weight = 0.1;
     options.min_reliable_points = 100;
     options.unreliable_verify_px = verify_px;

@@ -71,6 +71,14 @@ TEST(BaProblemValidation, LevelTooHigh) {
   expect_rejected(p, "pyramid level 16");
 }
 
+TEST(BaProblemValidation, WeightOutsideZeroToOne) {
+  for (const double weight : {0.0, -0.5, 1.5, kNaN}) {
+    BaProblem p = small_problem();
+    p.observations[2].weight = weight;
+    expect_rejected(p, "observation 2 has weight");
+  }
+}
+
 TEST(BaProblemValidation, NonFinitePose) {
   BaProblem p = small_problem();
   p.keyframes[1].T_c_w.translation().x() = kNaN;
