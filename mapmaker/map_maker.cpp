@@ -408,10 +408,8 @@ void MapMaker::run() {
 }
 
 PointWeight MapMaker::ba_point_weight() const {
-  if (!options_.ba_down_weighted.any() || options_.ba_label_weight == 1.0) return {};
-  return [this](const MapPoint& point) {
-    return options_.ba_down_weighted.contains(point) ? options_.ba_label_weight : 1.0;
-  };
+  if (!options_.left_out_of_ba.any()) return {};
+  return [this](const MapPoint& point) { return options_.left_out_of_ba.contains(point) ? 0.0 : 1.0; };
 }
 
 }  // namespace facadeslam

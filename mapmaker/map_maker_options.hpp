@@ -64,10 +64,9 @@ struct MapMakerOptions {
   // measured it saw it (MapPoint::view), not as its source keyframe did.
   bool newest_view_templates = true;
   // Label-aware bundle adjustment (set from configs/semantics.yaml when
-  // semantics are on): the measurements of points with these labels count
-  // `ba_label_weight` times as much in the cost as the others (0: left out).
-  UnreliableLabels ba_down_weighted;  // no classes: labels are ignored
-  double ba_label_weight = 1.0;
+  // semantics are on): the measurements of points with these labels (things
+  // that move, which the tracker leaves out too) are left out.
+  UnreliableLabels left_out_of_ba;  // no classes: labels are ignored
 };
 
 }  // namespace facadeslam

@@ -130,7 +130,7 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   options.label_neighbours = root.get_int("label_neighbours", Range::closed(0, 100), options.label_neighbours);
   options.sky_only_at_infinity = root.get_bool("sky_only_at_infinity", options.sky_only_at_infinity);
   options.unreliable_classes = read_classes(root, "unreliable_classes", options.unreliable_classes);
-  options.ba_unreliable_classes = read_classes(root, "ba_unreliable_classes", options.ba_unreliable_classes);
+  options.moving_classes = read_classes(root, "moving_classes", options.moving_classes);
   options.min_confidence = root.get_double("min_confidence", Range::closed(0, 1), options.min_confidence);
   options.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), options.unreliable_weight);
   options.min_reliable_points =

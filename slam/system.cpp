@@ -41,14 +41,14 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
 }
 
 // With labels coming, the tracker weighs points of unreliable classes down
-// (or leaves them out: SemanticsOptions::unreliable_weight), and bundle
-// adjustment those of SemanticsOptions::ba_unreliable_classes.
+// (or leaves them out: SemanticsOptions::unreliable_weight), and leaves out
+// those of moving classes, as bundle adjustment does.
 SlamOptions with_label_aware_tracking(SlamOptions options) {
   if (options.semantics.enabled) {
     const auto min_confidence = static_cast<float>(options.semantics.min_confidence);
     options.tracker.unreliable = {options.semantics.unreliable_classes, min_confidence};
-    options.mapmaker.ba_down_weighted = {options.semantics.ba_unreliable_classes, min_confidence};
-    options.mapmaker.ba_label_weight = options.semantics.unreliable_weight;
+    options.tracker.moving = {options.semantics.moving_classes, min_confidence};
+    options.mapmaker.left_out_of_ba = options.tracker.moving;
     options.tracker.min_reliable_points = options.semantics.min_reliable_points;
     options.tracker.unreliable_weight = options.semantics.unreliable_weight;
     options.tracker.unreliable_verify_px = options.semantics.unreliable_verify_px;

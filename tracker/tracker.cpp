@@ -62,7 +62,10 @@ void Tracker::reset() {
   descriptor_relocaliser_.clear();
 }
 
-bool Tracker::unreliable(const MapPoint& point) const { return options_.unreliable.contains(point); }
+double Tracker::label_weight(const MapPoint& point) const {
+  if (options_.moving.contains(point)) return 0.0;
+  return options_.unreliable.contains(point) ? options_.unreliable_weight : 1.0;
+}
 
 std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
                                                      const SE3d& T_c_w, int* dropped) const {
@@ -80,7 +83,7 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
     if (level < 0) continue;
     // Down-weighted points are searched like any other (pose_measurements
     // gives them their weight); only a weight of 0 leaves them out.
-    const bool left = options_.unreliable_weight <= 0.0 && unreliable(*points[i].point);
+    const bool left = label_weight(*points[i].point) <= 0.0;
     (left ? left_out : out).push_back({i, px, warp, level});
   }
   // Labels must never starve the tracker: where the view is mostly of
@@ -138,11 +141,8 @@ std::vector<PoseMeasurement> Tracker::pose_measurements(const std::vector<PointS
   std::vector<PoseMeasurement> out;
   out.reserve(found.size());
   for (const auto& m : found) {
-    double weight = 1.0;
-    if (unreliable(*m.point)) {
-      weight = options_.unreliable_weight;
-      if (down_weighted) ++*down_weighted;
-    }
+    const double weight = label_weight(*m.point);
+    if (down_weighted && weight < 1.0) ++*down_weighted;
     out.push_back({geometry.at(m.point.get())->p_w, m.pixel, m.level, weight});
   }
   return out;
@@ -169,7 +169,10 @@ int Tracker::verify_unreliable(PoseUpdateResult& update, std::vector<PoseMeasure
   int verified = 0;
   for (std::size_t i = 0; i < measurements.size(); ++i) {
     PoseMeasurement& m = measurements[i];
-    if (m.weight >= 1.0 || !update.inliers[i]) continue;
+    // A point of weight 0 (a moving class, searched only because the view
+    // has few others) is no inlier of a pose it did not take part in: its
+    // reprojection alone decides.
+    if (m.weight >= 1.0 || (m.weight > 0.0 && !update.inliers[i])) continue;
     const Eigen::Vector3d p_c = update.T_c_w * m.p_w;
     if (p_c.z() <= options_.pose.min_depth) continue;
     const double scale = ImagePyramid::level_scale(m.level);

@@ -85,7 +85,9 @@ class Tracker {
   // of unreliable classes (counted in `dropped`, if given).
   std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w,
                                      int* dropped = nullptr) const;
-  bool unreliable(const MapPoint& point) const;
+  // A point's prior weight from its label: 0 for a moving class, the
+  // unreliable weight for an unreliable one, else 1.
+  double label_weight(const MapPoint& point) const;
   // Gives the down-weighted measurements that `update`'s pose reprojects
   // within TrackerOptions::unreliable_verify_px their full weight and updates
   // the pose again from there; returns how many. `few_reliable`: only when

@@ -103,7 +103,10 @@ struct TrackerOptions {
   // Their weight in the pose update (Tukey's times this); 0 leaves them out
   // of the search altogether ...
   double unreliable_weight = 0.0;
-  // ... unless fewer than this many other points project into the image.
+  // Points with these labels (things that move as one body: cars) are left
+  // out like a weight of 0, whatever unreliable_weight says ...
+  UnreliableLabels moving;
+  // ... unless (for both) fewer than this many other points project into the image.
   int min_reliable_points = 100;
   // A down-weighted point that the pose reprojects within this many pixels
   // (of the level it was found at) is verified static and gets its full

@@ -137,17 +137,17 @@ TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_EQ(shipped.unreliable_weight, defaults.unreliable_weight);
   for (const char* name : {"car", "vegetation", "sky", "various"})
     EXPECT_TRUE(shipped.unreliable_classes.test(*semantic_class_by_name(name))) << name;
-  EXPECT_EQ(shipped.ba_unreliable_classes, defaults.ba_unreliable_classes);
-  EXPECT_EQ(shipped.ba_unreliable_classes, ClassSet().set(*semantic_class_by_name("car")));
+  EXPECT_EQ(shipped.moving_classes, defaults.moving_classes);
+  EXPECT_EQ(shipped.moving_classes, ClassSet().set(*semantic_class_by_name("car")));
 }
 
 TEST(SemanticsOptions, ReadsClassLists) {
   test::TempDir dir;
   const auto path = dir / "semantics.yaml";
-  test::write_text(path, "unreliable_classes: [sky]\nba_unreliable_classes: []\n");
+  test::write_text(path, "unreliable_classes: [sky]\nmoving_classes: []\n");
   const SemanticsOptions o = load_semantics_options(path);
   EXPECT_EQ(o.unreliable_classes, ClassSet().set(*semantic_class_by_name("sky")));
-  EXPECT_TRUE(o.ba_unreliable_classes.none());
+  EXPECT_TRUE(o.moving_classes.none());
 }
 
 TEST(SemanticsOptions, ClassWeightsArePriorToTheWeight) {
@@ -176,9 +176,9 @@ TEST(SemanticsOptions, RejectsBadValues) {
   EXPECT_THAT(semantics_error("unreliable_verify_px: -1\n"), HasSubstr("unreliable_verify_px"));
   EXPECT_THAT(semantics_error("grey_model: [a, b]\n"), HasSubstr("grey_model"));
   EXPECT_THAT(semantics_error("context_scale: 1\n"), HasSubstr("context_scale"));
-  EXPECT_THAT(semantics_error("ba_unreliable_classes: [lorry]\n"),
-              AllOf(HasSubstr("semantics.yaml"), HasSubstr("ba_unreliable_classes"), HasSubstr("lorry")));
-  EXPECT_THAT(semantics_error("ba_unreliable_classes: car\n"), HasSubstr("ba_unreliable_classes"));
+  EXPECT_THAT(semantics_error("moving_classes: [lorry]\n"),
+              AllOf(HasSubstr("semantics.yaml"), HasSubstr("moving_classes"), HasSubstr("lorry")));
+  EXPECT_THAT(semantics_error("moving_classes: car\n"), HasSubstr("moving_classes"));
 }
 
 }  // namespace

@@ -63,11 +63,11 @@ TEST(StreetRegression, StreetWalkLosesNoFrameAndAteWithinOnePercent) {
 // road looking forward, two 90-degree turns, parked cars, 1226x370 with
 // KITTI's intrinsics (configs/scenes/street-drive.yaml). Issue 16: no frame
 // lost after initialisation, ATE <= 0.5 % of the path. Run as `replay` runs
-// it, with the shipped model's labels: its parked and oncoming cars and
-// swaying trees are weighed down by the tracker and its cars by bundle
-// adjustment too (SemanticsOptions::ba_unreliable_classes). 0.030 % (online
-// poses); without labels 0.019 %; with labels but bundle adjustment blind to
-// them 1.90 % (tracker seeds 2, 3: 1.01, 0.37 %).
+// it, with the shipped model's labels: its swaying trees are weighed down by
+// the tracker, its parked and oncoming cars left out of tracking and bundle
+// adjustment (SemanticsOptions::moving_classes). 0.046 % (online poses);
+// without labels 0.019 %; with the cars weighed down to 0.1 like the trees
+// 1.90 % (tracker seeds 2, 3: 1.01, 0.37 %).
 TEST(StreetRegression, StreetDriveLosesNoFrameAndAteWithinHalfAPercent) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
   SlamOptions options = test::synchronous_options();

@@ -269,5 +269,37 @@ TEST_F(LabelledPlaneTracking, KeepsTheDownWeightingWhereReliablePointsAreMany) {
   EXPECT_LT(error, 2e-3);
 }
 
+// Moving classes (cars) are left out of the search, like a weight of 0,
+// whatever the unreliable weight is; where the others are too few they are
+// searched after all, and those that stand still are verified.
+TEST_F(LabelledPlaneTracking, LeavesPointsOfMovingClassesOut) {
+  for (const int every : {2, 10}) {  // ~260 reliable points, or ~50 (under min_reliable_points)
+    SCOPED_TRACE(every);
+    int n = 0;
+    for (const auto& point : map_.points()) {
+      ClassVotes votes{};
+      if (n++ % every != 0) votes[2] = 1.f;  // a car
+      point->set_votes(votes);
+    }
+    TrackerOptions options = label_aware(2.0);
+    options.moving = options.unreliable;
+    Tracker tracker(camera_, map_, queue_, options);
+    tracker.start(SE3d(), 0);
+    for (int i = 1; i <= 5; ++i) {
+      const SE3d truth = path_pose(i);
+      const TrackingResult r = tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, truth)));
+      ASSERT_TRUE(r.tracked) << "frame " << i;
+      EXPECT_LT(position_error(r.T_c_w, truth), 2e-3) << "frame " << i;
+      if (every == 2) {
+        EXPECT_GT(r.points_dropped, 100) << "frame " << i;
+        EXPECT_EQ(r.points_down_weighted, 0) << "frame " << i;
+      } else {
+        EXPECT_EQ(r.points_dropped, 0) << "frame " << i;
+        EXPECT_GT(r.points_verified, 200) << "frame " << i;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace facadeslam
