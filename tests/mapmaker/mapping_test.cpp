@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -43,6 +45,22 @@ class PlaneKeyFrames : public ::testing::Test {
         }
     });
     return n > 0 ? std::sqrt(sum / n) : 0.0;
+  }
+
+  // The epipolar search's points between the two views, each pushed 5 cm
+  // along its ray from the first camera: ~1 px of disparity error in the
+  // second view, for bundle adjustment to take out.
+  std::vector<std::shared_ptr<MapPoint>> map_off_by_a_pixel() {
+    map_.add(epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}));
+    const auto points = map_.points();
+    map_.update([&](MapEditor& edit) {
+      for (const auto& p : points) {
+        PointGeometry g = p->geometry();
+        g.p_w *= 1.0 + 0.05 / g.p_w.norm();
+        edit.set_geometry(*p, g);
+      }
+    });
+    return points;
   }
 
   // Depth of a world point below the plane (the plane is Z = plane_depth).
@@ -131,18 +149,8 @@ TEST_F(PlaneKeyFrames, EpipolarSearchKeepsAwayOnlyFromMeasurementsAtTheSameOrNex
 }
 
 TEST_F(PlaneKeyFrames, AbortedBundleAdjustmentStillPublishesItsProgress) {
-  map_.add(epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}));
-  ASSERT_GT(map_.point_count(), 100u);
-  // Push every point 5 cm along its ray from the first camera: ~1 px of
-  // disparity error in the second view.
-  const auto points = map_.points();
-  map_.update([&](MapEditor& edit) {
-    for (const auto& p : points) {
-      PointGeometry g = p->geometry();
-      g.p_w *= 1.0 + 0.05 / g.p_w.norm();
-      edit.set_geometry(*p, g);
-    }
-  });
+  const auto points = map_off_by_a_pixel();
+  ASSERT_GT(points.size(), 100u);
   const double before = map_rms_px();
   std::atomic<bool> abort{false};
   BundleAdjusterOptions options;
@@ -163,16 +171,8 @@ TEST_F(PlaneKeyFrames, AbortedBundleAdjustmentStillPublishesItsProgress) {
 // measurements; a weight of 0 leaves them out (the point stays where it is),
 // any other keeps them in the solve.
 TEST_F(PlaneKeyFrames, BundleAdjustmentLeavesOutPointsOfWeightZero) {
-  map_.add(epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}));
-  ASSERT_GT(map_.point_count(), 100u);
-  const auto points = map_.points();
-  map_.update([&](MapEditor& edit) {
-    for (const auto& p : points) {
-      PointGeometry g = p->geometry();
-      g.p_w *= 1.0 + 0.05 / g.p_w.norm();
-      edit.set_geometry(*p, g);
-    }
-  });
+  const auto points = map_off_by_a_pixel();
+  ASSERT_GT(points.size(), 100u);
   std::map<MapPoint::Id, Eigen::Vector3d> before;
   for (const auto& p : points) before[p->id()] = p->position();
   const auto left_out = [](const MapPoint& p) { return p.id() % 2 == 0; };
