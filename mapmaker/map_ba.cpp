@@ -1,7 +1,11 @@
 #include "mapmaker/map_ba.hpp"
 
+#include <algorithm>
 #include <map>
+#include <string>
+#include <unordered_map>
 
+#include "core/util/error.hpp"
 #include "mapmaker/point_geometry.hpp"
 
 namespace facadeslam {
@@ -13,13 +17,34 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
   const auto keyframes = map.keyframes();
   if (keyframes.size() < 2) return report;
 
-  // Which keyframes and points take part.
+  // Each point's weight, read once (the semantic worker relabels points
+  // while we work): the selection, the problem and the outlier test must
+  // agree on which points take part.
+  std::unordered_map<MapPoint::Id, double> weight;
+  map.read([&](const MapView& view) {
+    for (const auto& kf : keyframes)
+      for (const auto& [point_id, m] : kf->measurements()) {
+        if (weight.contains(point_id)) continue;
+        const auto p = view.point(point_id);
+        const double w = p && weight_of ? weight_of(*p) : 1.0;
+        if (!(w >= 0.0 && w <= 1.0))
+          throw Error("bundle adjustment: point " + std::to_string(point_id) + " has weight " + std::to_string(w) +
+                      ", expected in [0, 1]");
+        weight.emplace(point_id, w);
+      }
+  });
+
+  // Which keyframes and points take part. Points of weight 0 are left out
+  // before the selection, so that every fixed keyframe it picks shares a
+  // measured point with the free ones.
   std::vector<KeyFrameCentre> centres;
   std::vector<ObservationRef> refs;
   // Poses and measurements: written only by the map maker, which runs this.
   for (const auto& kf : keyframes) centres.push_back({kf->id(), kf->centre_w()});
   for (const auto& kf : keyframes)
-    for (const auto& [point_id, m] : kf->measurements()) refs.push_back({kf->id(), point_id});
+    for (const auto& [point_id, m] : kf->measurements())
+      if (weight.at(point_id) > 0.0) refs.push_back({kf->id(), point_id});
+  if (refs.empty()) return report;
   const BaSelection selection = newest ? local_ba_selection(centres, refs, *newest, selection_options)
                                        : global_ba_selection(centres, refs);
 
@@ -46,32 +71,38 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
     }
   });
   std::vector<std::pair<KeyFrame*, MapPoint::Id>> obs_of;
+  std::vector<bool> observed(problem.keyframes.size(), false);
   for (const auto& kf : kf_of)
     for (const auto& [point_id, m] : kf->measurements()) {
       const auto pi = point_index.find(point_id);
       if (pi == point_index.end()) continue;
-      const double weight = weight_of ? weight_of(*point_of[pi->second]) : 1.0;
-      if (!(weight > 0.0)) continue;  // left out
-      problem.observations.push_back({kf_index.at(kf->id()), pi->second, m.pixel, m.level, weight});
+      const std::size_t k = kf_index.at(kf->id());
+      problem.observations.push_back({k, pi->second, m.pixel, m.level, weight.at(point_id)});
       obs_of.emplace_back(kf.get(), point_id);
+      observed[k] = true;
     }
-  if (!newest && problem.keyframes.size() >= 2) {
-    // Global: fix the first keyframe; keep the scale by anchoring the second's distance.
-    problem.keyframes.front().fixed = true;
-    for (std::size_t i = 1; i < problem.keyframes.size(); ++i)
-      if (!problem.keyframes[i].fixed &&
-          (problem.keyframes[i].T_c_w.inverse().translation() - problem.keyframes[0].T_c_w.inverse().translation())
-                  .norm() > 1e-9) {
-        problem.scale_anchor = BaScaleAnchor{i, 0};
-        break;
-      }
-  }
   report.keyframes = problem.keyframes.size();
   report.points = problem.points.size();
   report.observations = problem.observations.size();
   if (problem.points.empty() || problem.observations.empty()) return report;
-  if (std::none_of(problem.keyframes.begin(), problem.keyframes.end(), [](const BaKeyFrame& k) { return k.fixed; }))
-    problem.keyframes.front().fixed = true;
+  // The gauge is fixed among the keyframes that measure something (a
+  // keyframe without a measurement in the problem fixes nothing).
+  const std::size_t first_observed =
+      static_cast<std::size_t>(std::find(observed.begin(), observed.end(), true) - observed.begin());
+  if (!newest) {
+    // Global: fix the first keyframe; keep the scale by anchoring the second's distance.
+    problem.keyframes[first_observed].fixed = true;
+    const Eigen::Vector3d first_centre = problem.keyframes[first_observed].T_c_w.inverse().translation();
+    for (std::size_t i = first_observed + 1; i < problem.keyframes.size(); ++i)
+      if (observed[i] && !problem.keyframes[i].fixed &&
+          (problem.keyframes[i].T_c_w.inverse().translation() - first_centre).norm() > 1e-9) {
+        problem.scale_anchor = BaScaleAnchor{i, first_observed};
+        break;
+      }
+  }
+  bool gauge_fixed = false;
+  for (std::size_t i = 0; i < problem.keyframes.size(); ++i) gauge_fixed = gauge_fixed || (observed[i] && problem.keyframes[i].fixed);
+  if (!gauge_fixed) problem.keyframes[first_observed].fixed = true;
 
   report.ba = adjuster.solve(problem, camera);
   // An aborted solve still leaves the last accepted iterate in `problem`

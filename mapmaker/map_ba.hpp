@@ -25,8 +25,10 @@ struct MapBaReport {
 
 // Local BA around `newest` (with `selection` neighbours) when given,
 // otherwise a global BA (first keyframe fixed, scale anchored on the second).
-// `weight_of` gives each point's measurements their weight in the cost
-// (none: 1 for all).
+// `weight_of` gives each point's measurements their weight in the cost, in
+// [0, 1] (none: 1 for all); it is asked once per point per call. A point of
+// weight 0 (a moving class) is left out altogether: out of the selection, the
+// solve and the outlier test. A weight outside [0, 1] throws, naming the point.
 using PointWeight = std::function<double(const MapPoint&)>;
 MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adjuster,
                        std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection = {},

@@ -41,9 +41,11 @@ struct SemanticsOptions {
   // ... and a point two keyframes measure at a finite depth is not sky
   // (MapLabelOptions::sky_only_at_infinity).
   bool sky_only_at_infinity = true;
-  // The tracker does not search points labelled with one of these classes at
-  // `min_confidence` or more (moving or unstable things). Default: car,
-  // vegetation, sky, various.
+  // The tracker weighs points labelled with one of these classes at
+  // `min_confidence` or more (moving or unstable things) down in the pose
+  // update (unreliable_weight), and so does bundle adjustment unless they are
+  // of a moving class (below, left out of both). Default: car, vegetation,
+  // sky, various.
   ClassSet unreliable_classes{(1u << 2) | (1u << 7) | (1u << 6) | (1u << 0)};
   double min_confidence = 0.5;
   // Their weight in the pose update: 0 leaves them out of the search. Down-
@@ -63,11 +65,13 @@ struct SemanticsOptions {
   // altogether, by the tracker (as with a weight of 0, min_reliable_points
   // included) and by bundle adjustment: a car's points move as one body,
   // so their measurements agree with one another on a wrong motion, which
-  // neither Tukey's weights nor a robust loss reject, and a weight of 0.1
-  // still lets them steer (with true labels street-traffic at 8.6-12.6 %
-  // instead of 0.24 %; street-drive with the forest's labels drifted to
-  // 1.90 / 1.01 / 0.37 % over tracker seeds 1-3, now 0.046 / 0.034 / 0.017
-  // %, 0.019 % without labels). Swaying trees are noise that the weights
+  // neither Tukey's weights nor a robust loss reject, and a tracker weight
+  // of 0.1 still lets them steer (with true labels street-traffic at
+  // 2.8-8.6 % instead of 0.24 %; street-drive with the forest's labels
+  // drifted to 1.90 / 1.01 / 0.37 % over tracker seeds 1-3, now 0.046 /
+  // 0.034 / 0.017 %, 0.019 % without labels). Once the tracker leaves them
+  // out, bundle adjustment hardly sees them (0.224 % with them at full
+  // weight there): leaving them out of it too keeps the two consistent. Swaying trees are noise that the weights
   // handle, and trees that stand still carry the pose where little else
   // does (the demo): docs/benchmarks.md, session 24.
   ClassSet moving_classes{1u << 2};

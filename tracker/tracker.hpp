@@ -50,8 +50,8 @@ struct TrackingResult {
   bool keyframe_requested = false;
   int coarse_searched = 0, coarse_found = 0;
   int fine_searched = 0, fine_found = 0;
-  int points_dropped = 0;        // projecting into the image, but of an unreliable class: not searched
-  int points_down_weighted = 0;  // found, of an unreliable class: a lower weight in the pose update
+  int points_dropped = 0;        // projecting into the image, but of weight 0 (moving class): not searched
+  int points_down_weighted = 0;  // found, of an unreliable or moving class: a lower weight in the pose update
   int points_verified = 0;       // ... of which the pose put within unreliable_verify_px: full weight after all
   double inlier_rms_px = 0;
   SearchCounts fine_counts;
@@ -82,7 +82,8 @@ class Tracker {
   struct Candidate;  // a projected map point (tracker.cpp)
 
   // Map points that project into the image with a usable warp, except those
-  // of unreliable classes (counted in `dropped`, if given).
+  // of weight 0 (moving classes; counted in `dropped`, if given) where enough
+  // others are in view.
   std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w,
                                      int* dropped = nullptr) const;
   // A point's prior weight from its label: 0 for a moving class, the

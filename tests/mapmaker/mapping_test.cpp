@@ -6,11 +6,14 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/map/map.hpp"
+#include "core/util/error.hpp"
 #include "mapmaker/epipolar_search.hpp"
 #include "mapmaker/map_ba.hpp"
 #include "tests/support/plane_keyframe.hpp"
@@ -190,6 +193,76 @@ TEST_F(PlaneKeyFrames, BundleAdjustmentLeavesOutPointsOfWeightZero) {
   EXPECT_EQ(report.observations, 2 * kept);  // every point has two measurements, one per keyframe
   EXPECT_EQ(moved, kept);
   EXPECT_LT(report.ba.final_rms_px, report.ba.initial_rms_px);
+}
+
+// A moving thing seen by the two oldest keyframes only: the points they
+// share are left out (weight 0), and a third keyframe shares other points with
+// the second. Bundle adjustment must then fix its gauge among the keyframes
+// that keep measurements (here the first keyframe keeps none), where it used
+// to fix the first keyframe and fail the problem's "something fixed" check.
+class LeftOutPoints : public PlaneKeyFrames {
+ protected:
+  void SetUp() override {
+    PlaneKeyFrames::SetUp();
+    for (const auto& p : map_off_by_a_pixel()) moving_.emplace(p->id(), p->position());
+    third_ = add_keyframe(test::view_pose(plane_, plane_.plane_depth, 0.0, 0.0, 0.30, 0.0));
+    map_.add(epipolar_new_points(map_, camera_, third_, second_, EpipolarSearchOptions{}));
+    ASSERT_GT(moving_.size(), 100u);
+    ASSERT_GT(map_.point_count(), moving_.size() + 50);
+  }
+
+  MapBaReport adjust(std::optional<KeyFrame::Id> newest) {
+    return adjust_map(map_, camera_, BundleAdjuster(), newest, LocalBaOptions{.neighbours = 1},
+                      [&](const MapPoint& p) { return moving_.contains(p.id()) ? 0.0 : 1.0; });
+  }
+
+  void expect_left_out_points_unmoved() const {
+    for (const auto& p : map_.points())
+      if (const auto it = moving_.find(p->id()); it != moving_.end()) {
+        EXPECT_EQ(p->position(), it->second) << "point " << p->id() << " was left out but moved";
+      }
+  }
+
+  std::map<MapPoint::Id, Eigen::Vector3d> moving_;
+  std::shared_ptr<KeyFrame> third_;
+};
+
+TEST_F(LeftOutPoints, LocalBundleAdjustmentFixesItsGaugeAmongTheKeyframesThatKeepMeasurements) {
+  const Eigen::Matrix4d first_before = first_->T_c_w().matrix();
+  MapBaReport report;
+  ASSERT_NO_THROW(report = adjust(third_->id()));
+  EXPECT_GT(report.observations, 100u);
+  EXPECT_LE(report.ba.final_rms_px, report.ba.initial_rms_px);
+  EXPECT_EQ(first_->T_c_w().matrix(), first_before);
+  expect_left_out_points_unmoved();
+}
+
+TEST_F(LeftOutPoints, GlobalBundleAdjustmentFixesItsGaugeAmongTheKeyframesThatKeepMeasurements) {
+  const Eigen::Matrix4d first_before = first_->T_c_w().matrix();
+  const Eigen::Matrix4d second_before = second_->T_c_w().matrix();
+  MapBaReport report;
+  ASSERT_NO_THROW(report = adjust(std::nullopt));
+  EXPECT_GT(report.observations, 100u);
+  EXPECT_LT(report.ba.final_rms_px, report.ba.initial_rms_px);
+  EXPECT_EQ(first_->T_c_w().matrix(), first_before);
+  EXPECT_EQ(second_->T_c_w().matrix(), second_before) << "the first keyframe with measurements holds the gauge";
+  expect_left_out_points_unmoved();
+}
+
+TEST_F(PlaneKeyFrames, BundleAdjustmentRejectsAWeightOutsideZeroToOneNamingThePoint) {
+  map_off_by_a_pixel();
+  for (const double bad : {-0.5, 1.5, std::nan("")})
+    EXPECT_THROW(
+        {
+          try {
+            adjust_map(map_, camera_, BundleAdjuster(), std::nullopt, {}, [&](const MapPoint&) { return bad; });
+          } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("expected in [0, 1]"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("point "), std::string::npos) << e.what();
+            throw;
+          }
+        },
+        Error);
 }
 
 }  // namespace

@@ -159,7 +159,7 @@ SemanticRun run_with_true_labels(const std::string& name) {
 // shipped settings (cars left out of tracking and bundle adjustment, the
 // other unreliable classes weighed down to 0.1) they do (0.24 % against the
 // twin's 0.30 %), which this test holds; with cars weighed down to 0.1 like
-// the rest they did not (8.6-12.6 %): cars keeping pace look still, so even
+// the rest they did not (2.8-8.6 %): cars keeping pace look still, so even
 // a small weight lets them steer the pose (docs/benchmarks.md, session 24).
 // The shipped forest calls few of these close-up car points car (20 % of
 // the found ones by their own votes, 1.3 % with a confidence of 0.5), so for
