@@ -101,7 +101,8 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
       }
   }
   bool gauge_fixed = false;
-  for (std::size_t i = 0; i < problem.keyframes.size(); ++i) gauge_fixed = gauge_fixed || (observed[i] && problem.keyframes[i].fixed);
+  for (std::size_t i = 0; i < problem.keyframes.size(); ++i)
+    gauge_fixed = gauge_fixed || (observed[i] && problem.keyframes[i].fixed);
   if (!gauge_fixed) problem.keyframes[first_observed].fixed = true;
 
   report.ba = adjuster.solve(problem, camera);
