@@ -11,6 +11,7 @@
 #include "mapmaker/epipolar_search.hpp"
 #include "mapmaker/keyframe_culling.hpp"
 #include "mapmaker/map_ba.hpp"
+#include "mapmaker/point_culling.hpp"
 #include "mapmaker/point_geometry.hpp"
 
 namespace facadeslam {
@@ -19,7 +20,8 @@ namespace {
 // A map needs at least this many points to track from.
 constexpr std::size_t kMinInitialPoints = 30;
 
-// Keyframes a single-view (depth-prior) point may wait for a second view.
+// Keyframes a single-view (depth-prior) point may wait for a second view,
+// and a point left out for its class may go unmeasured (point_culling.hpp).
 constexpr KeyFrame::Id kSingleViewGraceKeyframes = 3;
 
 }  // namespace
@@ -276,27 +278,14 @@ void MapMaker::cull_redundant_keyframes(KeyFrame::Id newest) {
 }
 
 void MapMaker::remove_outlier_points() {
-  // Measurement counts over all keyframes (the map maker, their only writer,
-  // reads them without a lock).
-  const auto keyframes = map_.keyframes();
-  std::map<MapPoint::Id, int> measured;
-  KeyFrame::Id newest = 0;
-  for (const auto& kf : keyframes) {
-    newest = std::max(newest, kf->id());
-    for (const auto& [id, m] : kf->measurements()) ++measured[id];
-  }
-  std::vector<std::shared_ptr<MapPoint>> outliers;
-  for (const auto& p : map_.points()) {
-    const bool rarely_found =
-        p->times_searched() >= static_cast<std::uint32_t>(options_.outlier_min_searches) &&
-        p->times_found() < options_.outlier_max_found_ratio * p->times_searched();
-    const auto it = measured.find(p->id());
-    // A point seen by one keyframe only is kept while its keyframe is among
-    // the newest few: a depth-prior point waits there for its second view.
-    const bool awaiting_second_view = p->source().keyframe_id + kSingleViewGraceKeyframes > newest;
-    const bool too_few_views = it == measured.end() || (it->second < 2 && !awaiting_second_view);
-    if (rarely_found || too_few_views) outliers.push_back(p);
-  }
+  const PointCullingOptions culling{.min_searches = options_.outlier_min_searches,
+                                    .max_found_ratio = options_.outlier_max_found_ratio,
+                                    .grace_keyframes = kSingleViewGraceKeyframes};
+  LeftOutPoint left_out;
+  if (options_.left_out_of_ba.any())
+    left_out = [this](const MapPoint& point) { return options_.left_out_of_ba.contains(point); };
+  const std::vector<std::shared_ptr<MapPoint>> outliers =
+      points_to_cull(map_.keyframes(), map_.points(), culling, left_out);
   if (!outliers.empty())
     map_.update([&](MapEditor& edit) {
       for (const auto& p : outliers) edit.mark_bad(*p);

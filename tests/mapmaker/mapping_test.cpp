@@ -16,6 +16,7 @@
 #include "core/util/error.hpp"
 #include "mapmaker/epipolar_search.hpp"
 #include "mapmaker/map_ba.hpp"
+#include "mapmaker/point_culling.hpp"
 #include "tests/support/plane_keyframe.hpp"
 #include "tests/support/rendered_plane.hpp"
 
@@ -247,6 +248,37 @@ TEST_F(LeftOutPoints, GlobalBundleAdjustmentFixesItsGaugeAmongTheKeyframesThatKe
   EXPECT_EQ(first_->T_c_w().matrix(), first_before);
   EXPECT_EQ(second_->T_c_w().matrix(), second_before) << "the first keyframe with measurements holds the gauge";
   expect_left_out_points_unmoved();
+}
+
+// A point left out for its class is culled once none of the newest keyframes
+// measures it (here: the newest only): nothing searches it or adjusts it any
+// more. The points the newest keyframe measures stay, left out or not, and
+// without labels nothing is culled (every point has two views and was never
+// searched).
+TEST_F(LeftOutPoints, PointsLeftOutForTheirClassAreCulledOnceNoNewKeyframeMeasuresThem) {
+  const PointCullingOptions options{.grace_keyframes = 1};
+  const auto keyframes = map_.keyframes();
+  const auto points = map_.points();
+  EXPECT_TRUE(points_to_cull(keyframes, points, options).empty());
+  const auto everything = [](const MapPoint&) { return true; };
+  const auto culled = points_to_cull(keyframes, points, options, everything);
+  std::size_t culled_moving = 0;
+  for (const auto& p : culled) culled_moving += moving_.contains(p->id());
+  EXPECT_EQ(culled_moving, moving_.size());
+  EXPECT_EQ(culled.size(), moving_.size()) << "a point the newest keyframe measures was culled";
+  // With the third keyframe among the newest two, the second (which measures
+  // the moving points) is too: they stay.
+  EXPECT_TRUE(points_to_cull(keyframes, points, {.grace_keyframes = 2}, everything).empty());
+}
+
+// PTAM's rule: searched often and rarely found.
+TEST_F(LeftOutPoints, PointsTheTrackerRarelyFindsAreCulled) {
+  const auto points = map_.points();
+  for (int i = 0; i < 20; ++i) points.front()->count_search(i < 3);  // found 3 of 20 times: under 0.2
+  for (int i = 0; i < 20; ++i) points.back()->count_search(i < 4);   // 4 of 20: kept
+  const auto culled = points_to_cull(map_.keyframes(), points, PointCullingOptions{});
+  ASSERT_EQ(culled.size(), 1u);
+  EXPECT_EQ(culled.front(), points.front());
 }
 
 TEST_F(PlaneKeyFrames, BundleAdjustmentRejectsAWeightOutsideZeroToOneNamingThePoint) {

@@ -172,10 +172,10 @@ TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndTrueLabelsBringItBack
   const SemanticRun on = run_scene("street-traffic", true);
   const SemanticRun truth = run_with_true_labels("street-traffic");
   std::printf("[  FIGURES ] street-traffic: ATE %.3f %% with the forest's labels, %.3f %% with true labels, "
-              "%.3f %% without labels, static twin %.3f %%; lost %zu / %zu / %zu\n",
+              "%.3f %% without labels, static twin %.3f %%; lost %zu / %zu / %zu; map points %zu / %zu / %zu / %zu\n",
               on.ate.ate_percent_of_path, truth.ate.ate_percent_of_path, off.ate.ate_percent_of_path,
               twin.ate.ate_percent_of_path, on.log.lost_frames().size(), truth.log.lost_frames().size(),
-              off.log.lost_frames().size());
+              off.log.lost_frames().size(), on.points, truth.points, off.points, twin.points);
   EXPECT_TRUE(twin.log.lost_frames().empty());
   EXPECT_GE(off.ate.ate_percent_of_path, 2.0 * twin.ate.ate_percent_of_path);
   EXPECT_TRUE(truth.log.lost_frames().empty());
