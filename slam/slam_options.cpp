@@ -131,6 +131,13 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   options.sky_only_at_infinity = root.get_bool("sky_only_at_infinity", options.sky_only_at_infinity);
   options.unreliable_classes = read_classes(root, "unreliable_classes", options.unreliable_classes);
   options.moving_classes = read_classes(root, "moving_classes", options.moving_classes);
+  if (const auto regions = root.optional_child("moving_regions")) {
+    semantics::MovingRegionOptions& r = options.moving_regions;
+    r.step = regions->get_int("step", Range::closed(0, 256), r.step);
+    r.sigma_cells = regions->get_double("sigma", Range::closed(0.1, 100), r.sigma_cells);
+    r.min_density = regions->get_double("min_density", Range::positive(1), r.min_density);
+    regions->finish();
+  }
   options.min_confidence = root.get_double("min_confidence", Range::closed(0, 1), options.min_confidence);
   options.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), options.unreliable_weight);
   options.min_reliable_points =

@@ -6,6 +6,7 @@
 
 #include "core/map/map_point.hpp"
 #include "mapmaker/map_maker_options.hpp"
+#include "semantics/worker/moving_regions.hpp"
 #include "semantics/worker/neighbour_label_fusion.hpp"
 #include "slam/init/init_options.hpp"
 #include "tracker/tracker_options.hpp"
@@ -75,6 +76,12 @@ struct SemanticsOptions {
   // handle, and trees that stand still carry the pose where little else
   // does (the demo): docs/benchmarks.md, session 24.
   ClassSet moving_classes{1u << 2};
+  // ... and so are points in regions the semantic worker finds dense with
+  // calls of a moving class (semantics/worker/moving_regions.hpp): the
+  // forest calls few of a close-up car's points car one by one, many of its
+  // region's. street-traffic with the forest's labels 8.70 -> 0.31 % (its
+  // static twin 0.30 %); step 0: no regions (docs/benchmarks.md, session 25).
+  semantics::MovingRegionOptions moving_regions;
 
   // prior^weight per class, scaled so the largest is 1.
   ClassVotes class_weights() const;

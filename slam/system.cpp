@@ -36,6 +36,7 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
   auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model), queue, options.class_weights());
   if (!options.grey_model.empty()) worker->use_grey_model(load(options.grey_model));
   worker->use_context_scale(options.context_scale);
+  worker->use_moving_regions(options.moving_regions, options.moving_classes);
   worker->use_map_labels(map, options.map_labels());
   return worker;
 }
@@ -47,7 +48,7 @@ SlamOptions with_label_aware_tracking(SlamOptions options) {
   if (options.semantics.enabled) {
     const auto min_confidence = static_cast<float>(options.semantics.min_confidence);
     options.tracker.unreliable = {options.semantics.unreliable_classes, min_confidence};
-    options.tracker.moving = {options.semantics.moving_classes, min_confidence};
+    options.tracker.moving = {options.semantics.moving_classes, min_confidence, options.semantics.moving_regions.step > 0};
     options.mapmaker.left_out_of_ba = options.tracker.moving;
     options.tracker.min_reliable_points = options.semantics.min_reliable_points;
     options.tracker.unreliable_weight = options.semantics.unreliable_weight;

@@ -64,6 +64,24 @@ void MapPoint::set_votes(const ClassVotes& votes) {
   set_labels_from_votes();
 }
 
+MapPoint::RegionViews MapPoint::region_views() const {
+  std::lock_guard lock(votes_mutex_);
+  return region_views_;
+}
+
+void MapPoint::add_region_view(bool in_region) {
+  std::lock_guard lock(votes_mutex_);
+  ++region_views_.views;
+  region_views_.in_region += in_region;
+  in_moving_region_.store(2 * region_views_.in_region > region_views_.views, std::memory_order_release);
+}
+
+void MapPoint::set_region_views(const RegionViews& views) {
+  std::lock_guard lock(votes_mutex_);
+  region_views_ = views;
+  in_moving_region_.store(2 * region_views_.in_region > region_views_.views, std::memory_order_release);
+}
+
 PointGeometry fronto_parallel_geometry(const Eigen::Matrix3d& R_w_c, const Eigen::Vector3d& centre_w,
                                        const Eigen::Vector3d& ray_c, const Eigen::Vector3d& ray_right_c,
                                        const Eigen::Vector3d& ray_down_c, double depth) {

@@ -103,6 +103,23 @@ class MapPoint {
   // the votes and the own label stay the point's.
   void set_label_from(const ClassVotes& evidence);
 
+  // Region-level evidence (the semantic worker's moving-region detector,
+  // semantics/worker/moving_regions.hpp): of the views the detector looked
+  // at, how many saw the point inside a region dense with calls of a moving
+  // class. A point most of whose views did is in a moving region, whatever
+  // its own label: one by one the forest calls a close-up car's points
+  // building or road, yet their region is full of car calls. Written by the
+  // semantic worker (add_region_view) or when loading a map (set_).
+  struct RegionViews {
+    std::uint32_t views = 0;
+    std::uint32_t in_region = 0;  // <= views
+    bool operator==(const RegionViews&) const = default;
+  };
+  RegionViews region_views() const;
+  void add_region_view(bool in_region);
+  void set_region_views(const RegionViews& views);
+  bool in_moving_region() const { return in_moving_region_.load(std::memory_order_acquire); }
+
   // Marked bad by the map maker (MapEditor::mark_bad); snapshots leave bad
   // points out and Map::remove_bad_points removes them.
   bool is_bad() const { return bad_.load(std::memory_order_acquire); }
@@ -132,6 +149,8 @@ class MapPoint {
   // thread; a mutex keeps a reader from seeing half an update.
   mutable std::mutex votes_mutex_;
   ClassVotes votes_{};
+  RegionViews region_views_;            // under votes_mutex_
+  std::atomic<bool> in_moving_region_{false};
   std::atomic<bool> bad_{false};
   std::atomic<std::uint32_t> searched_{0}, found_{0};
 };

@@ -12,6 +12,10 @@ namespace facadeslam {
 struct UnreliableLabels {
   ClassSet classes;  // none: labels are ignored
   float min_confidence = 0.5f;
+  // Also a point in a moving region (MapPoint::in_moving_region), whatever
+  // its label: set for the moving classes, whose regions the semantic worker
+  // detects.
+  bool regions = false;
 
   bool any() const { return classes.any(); }
   bool contains(const MapPoint& point) const;

@@ -54,6 +54,13 @@ void SemanticWorker::use_context_scale(double scale) {
   context_scale_ = scale;
 }
 
+void SemanticWorker::use_moving_regions(const MovingRegionOptions& options, const ClassSet& moving_classes) {
+  // Checked here, before any keyframe comes: MovingRegions throws for bad options.
+  if (options.step > 0) static_cast<void>(MovingRegions(cv::Size(1, 1), options));
+  region_options_ = options;
+  moving_classes_ = moving_classes;
+}
+
 void SemanticWorker::use_map_labels(const Map& map, const MapLabelOptions& options) {
   if (options.neighbours < 0)
     throw Error("semantic worker: a number of neighbours >= 0 (0 = none), not " + std::to_string(options.neighbours));
@@ -108,10 +115,22 @@ void SemanticWorker::label(const KeyFramePoints& job) {
     points.push_back(point);
   }
   if (!points.empty()) {
+    // The moving-region grid's cells go through the descriptor with the
+    // points: its planes are computed once per image.
+    std::optional<MovingRegions> regions;
+    if (region_options_.step > 0) {
+      regions.emplace(colour.size(), region_options_);
+      keypoints.insert(keypoints.end(), regions->cells().begin(), regions->cells().end());
+    }
     cv::Mat shares = vote_shares(*classifier, colour, keypoints, 1.0);
     if (context_scale_ > 0.0) shares += vote_shares(*classifier, colour, keypoints, context_scale_);
     const std::vector<int>& columns = classifier->model.forest.classes();
+    if (regions) {
+      const auto first_cell = static_cast<int>(points.size());
+      regions->set_calls(shares.rowRange(first_cell, shares.rows), columns, class_weights_, moving_classes_);
+    }
     for (std::size_t i = 0; i < points.size(); ++i) {
+      if (regions) points[i]->add_region_view(regions->contains(keypoints[i]));
       ClassVotes votes{};
       float total = 0.f;
       for (std::size_t k = 0; k < columns.size(); ++k) {

@@ -22,6 +22,7 @@
 #include "core/map/map.hpp"
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
+#include "semantics/worker/moving_regions.hpp"
 #include "semantics/worker/neighbour_label_fusion.hpp"
 
 namespace facadeslam::semantics {
@@ -55,6 +56,11 @@ class SemanticWorker {
   // then covers 1/scale times more of the facade around the point, context a
   // 21-pixel patch at a window's corner does not have. Call before start().
   void use_context_scale(double scale);
+  // Also detect regions of `moving_classes` (moving_regions.hpp) in each
+  // keyframe and tell each point whether it lay in one
+  // (MapPoint::add_region_view). Call before start(); throws Error for
+  // options out of range. step 0: no detection (the default).
+  void use_moving_regions(const MovingRegionOptions& options, const ClassSet& moving_classes);
   // After each round of keyframes, give every labelled point of `map` the
   // label of its votes fused with its nearest points' and the geometric cue
   // (neighbour_label_fusion.hpp). Call before start(); `map` must outlive
@@ -97,6 +103,8 @@ class SemanticWorker {
   std::optional<Classifier> grey_;
   ClassVotes class_weights_;
   double context_scale_ = 0.0;
+  MovingRegionOptions region_options_{.step = 0};
+  ClassSet moving_classes_;
   const Map* fusion_map_ = nullptr;
   MapLabelOptions fusion_options_{.neighbours = 0, .sky_only_at_infinity = false};
   KeyFramePointsQueue& queue_;

@@ -136,8 +136,10 @@ SemanticRun run_with_true_labels(const std::string& name) {
   scene.keep_labels();
   SlamOptions options = options_with_semantics(true);
   // True labels need no neighbours' votes (and the labeller's overwhelming
-  // votes would count as one point's shares among them).
+  // votes would count as one point's shares among them), nor the forest's
+  // moving regions.
   options.semantics.label_neighbours = 0;
+  options.semantics.moving_regions.step = 0;
   System system(scene.camera(), options);
   TrueLabeller labeller;
   SemanticRun run;
@@ -155,17 +157,17 @@ SemanticRun run_with_true_labels(const std::string& name) {
 // Traffic that fills the view: cars driving beside the walker at its own
 // pace pull a label-blind tracker off (the scene must prove that: >= 2x its
 // static twin, the same street and path with nothing moving). The issue asks
-// that the labels bring it back to <= 1.2x the twin. With true labels and the
-// shipped settings (cars left out of tracking and bundle adjustment, the
-// other unreliable classes weighed down to 0.1) they do (0.24 % against the
-// twin's 0.30 %), which this test holds; with cars weighed down to 0.1 like
-// the rest they did not (2.8-8.6 %): cars keeping pace look still, so even
-// a small weight lets them steer the pose (docs/benchmarks.md, session 24).
-// The shipped forest calls few of these close-up car points car (20 % of
-// the found ones by their own votes, 1.3 % with a confidence of 0.5), so for
-// its labels the test holds what is true today: never worse than no labels,
-// no frame lost. The figures are printed for all four runs.
-TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndTrueLabelsBringItBack) {
+// that the labels bring it back to <= 1.2x the twin. The forest calls few of
+// these close-up car points car one by one (20 % of the found ones by their
+// own votes, 1.3 % with a confidence of 0.5: 8.70 % with its labels alone),
+// but their regions are full of its car calls: with the moving regions
+// (semantics/worker/moving_regions.hpp) 0.31 % against the twin's 0.30 %.
+// A perfect classifier (the renderer's true labels, no regions) shows what
+// the settings can do: cars left out of tracking and bundle adjustment, the
+// other unreliable classes weighed down to 0.1, 0.25 % (with cars weighed
+// down to 0.1 like the rest 2.8-8.6 %: cars keeping pace look still, so even
+// a small weight lets them steer; docs/benchmarks.md, sessions 24 and 25).
+TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndLabelsBringItBack) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
   const SemanticRun twin = run_scene("street-traffic-static", false);
   const SemanticRun off = run_scene("street-traffic", false);
@@ -182,7 +184,7 @@ TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndTrueLabelsBringItBack
   EXPECT_LE(truth.ate.ate_percent_of_path, 1.2 * twin.ate.ate_percent_of_path);
   EXPECT_TRUE(on.log.lost_frames().empty());
   EXPECT_GT(on.dropped, 0u) << "label-aware tracking never weighed a car point down";
-  EXPECT_LE(on.ate.ate_percent_of_path, 1.05 * off.ate.ate_percent_of_path);
+  EXPECT_LE(on.ate.ate_percent_of_path, 1.2 * twin.ate.ate_percent_of_path);
 }
 
 }  // namespace
