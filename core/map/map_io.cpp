@@ -77,6 +77,14 @@ ClassVotes get_votes(ByteReader& in) {
   return votes;
 }
 
+MapPoint::RegionViews get_region_views(ByteReader& in) {
+  MapPoint::RegionViews views;
+  views.views = in.get<std::uint32_t>("point region views");
+  views.in_region = in.get<std::uint32_t>("point region views");
+  if (views.in_region > views.views) in.fail("point region views: more in a region than views");
+  return views;
+}
+
 // Version 2 kept only the label and its share. The winner keeps its share and
 // the rest is spread evenly over the other classes: the label and confidence
 // come out as they were (a winner's share is always above 1/9) and new votes
@@ -224,6 +232,9 @@ void save_map(const std::filesystem::path& path, const Map& map, const Camera& c
       put_vec(out, g.down_w);
       put_vec(out, g.normal_w);
       for (const float v : p->votes()) out.put(v);
+      const MapPoint::RegionViews region = p->region_views();
+      out.put(region.views);
+      out.put(region.in_region);
       out.put(static_cast<std::uint8_t>(p->is_bad()));
     }
   });
@@ -324,6 +335,7 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     g.normal_w = get_vec(in, "point geometry");
     auto point = std::make_shared<MapPoint>(id, std::move(source), g);
     point->set_votes(version >= 3 ? get_votes(in) : votes_from_version2_label(in));
+    if (version >= 4) point->set_region_views(get_region_views(in));
     if (in.get<std::uint8_t>("point flags")) bad.push_back(point);
     points.push_back(std::move(point));
   }

@@ -3,7 +3,7 @@
 //   magic "FSLAMMAP", u32 format version, camera (model, size, parameters),
 //   id counters, keyframes (frame index, timestamp, pose, depth stats,
 //   pyramid levels with their corners, colour image, measurements), points
-//   (source, geometry, label, flags), and a trailing FNV-1a checksum. The
+//   (source, geometry, label votes, moving-region views, flags), and a trailing FNV-1a checksum. The
 //   small blurry images are rebuilt from the pyramids on load.
 // Loading checks the magic, the version, the checksum and that the map was
 // made with the camera of the current run; each failure is an Error naming
@@ -19,8 +19,10 @@
 namespace facadeslam {
 
 // 2: frame index added, small blurry image rebuilt; 3: per-class label votes
-// instead of label + confidence (version 2 files still load, see map_io.cpp).
-inline constexpr std::uint32_t kMapFormatVersion = 3;
+// instead of label + confidence (version 2 files still load, see map_io.cpp);
+// 4: each point's moving-region views (MapPoint::RegionViews; older files
+// load with none).
+inline constexpr std::uint32_t kMapFormatVersion = 4;
 inline constexpr std::uint32_t kOldestMapFormatVersion = 2;
 
 void save_map(const std::filesystem::path& path, const Map& map, const Camera& camera);

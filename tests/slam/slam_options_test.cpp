@@ -139,6 +139,20 @@ TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
     EXPECT_TRUE(shipped.unreliable_classes.test(*semantic_class_by_name(name))) << name;
   EXPECT_EQ(shipped.moving_classes, defaults.moving_classes);
   EXPECT_EQ(shipped.moving_classes, ClassSet().set(*semantic_class_by_name("car")));
+  EXPECT_EQ(shipped.moving_regions.step, defaults.moving_regions.step);
+  EXPECT_EQ(shipped.moving_regions.sigma_cells, defaults.moving_regions.sigma_cells);
+  EXPECT_EQ(shipped.moving_regions.min_density, defaults.moving_regions.min_density);
+  EXPECT_GT(shipped.moving_regions.step, 0) << "the shipped settings detect moving regions";
+}
+
+TEST(SemanticsOptions, ReadsMovingRegions) {
+  test::TempDir dir;
+  const auto path = dir / "semantics.yaml";
+  test::write_text(path, "moving_regions:\n  step: 0\n  sigma: 1.5\n  min_density: 0.4\n");
+  const SemanticsOptions o = load_semantics_options(path);
+  EXPECT_EQ(o.moving_regions.step, 0);
+  EXPECT_EQ(o.moving_regions.sigma_cells, 1.5);
+  EXPECT_EQ(o.moving_regions.min_density, 0.4);
 }
 
 TEST(SemanticsOptions, ReadsClassLists) {
@@ -179,6 +193,10 @@ TEST(SemanticsOptions, RejectsBadValues) {
   EXPECT_THAT(semantics_error("moving_classes: [lorry]\n"),
               AllOf(HasSubstr("semantics.yaml"), HasSubstr("moving_classes"), HasSubstr("lorry")));
   EXPECT_THAT(semantics_error("moving_classes: car\n"), HasSubstr("moving_classes"));
+  EXPECT_THAT(semantics_error("moving_regions: {step: -1}\n"), HasSubstr("moving_regions.step"));
+  EXPECT_THAT(semantics_error("moving_regions: {min_density: 0}\n"), HasSubstr("moving_regions.min_density"));
+  EXPECT_THAT(semantics_error("moving_regions: {sigma: 0}\n"), HasSubstr("moving_regions.sigma"));
+  EXPECT_THAT(semantics_error("moving_regions: {stepp: 8}\n"), HasSubstr("moving_regions.stepp"));
 }
 
 }  // namespace

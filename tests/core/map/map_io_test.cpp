@@ -78,6 +78,8 @@ void expect_identical(const Map& a, const Map& b) {
     EXPECT_EQ(pa[i]->source().pixel_level0, pb[i]->source().pixel_level0);
     EXPECT_EQ(pa[i]->label(), pb[i]->label());
     EXPECT_EQ(pa[i]->votes(), pb[i]->votes());
+    EXPECT_EQ(pa[i]->region_views(), pb[i]->region_views());
+    EXPECT_EQ(pa[i]->in_moving_region(), pb[i]->in_moving_region());
     EXPECT_EQ(pa[i]->is_bad(), pb[i]->is_bad());
   }
   EXPECT_EQ(a.next_point_id_value(), b.next_point_id_value());
@@ -135,34 +137,43 @@ TEST_F(MapIo, WrongVersionIsRejected) {
   write_file(dir / "v99.fslmap", data);
   Map loaded;
   EXPECT_THAT(error_of([&] { load_map(dir / "v99.fslmap", loaded); }),
-              AllOf(HasSubstr("v99.fslmap"), HasSubstr("version 99"), HasSubstr("reads versions 2 to 3")));
+              AllOf(HasSubstr("v99.fslmap"), HasSubstr("version 99"), HasSubstr("reads versions 2 to 4")));
 }
 
-// Rewrites a version 3 file as version 2 did: each point's votes (the last
-// 9 floats before its flag byte) become its label and confidence. Point
-// records are the file's last bytes before the checksum.
-std::string as_version2(const std::string& v3, const std::vector<std::shared_ptr<MapPoint>>& points) {
-  constexpr std::size_t kHead = 8 + 8 + 4 + 2 * 8 + 12 * 8, kVotes = sizeof(ClassVotes), kRecord = kHead + kVotes + 1;
-  const std::size_t body = v3.size() - 8, first = body - points.size() * kRecord;
-  std::string v2 = v3.substr(0, first);
+// A point record: id, source keyframe, level, pixel, geometry; then its
+// votes (9 floats), its region views (2 x u32, version 4) and its flag byte.
+// Point records are the file's last bytes before the checksum.
+constexpr std::size_t kPointHead = 8 + 8 + 4 + 2 * 8 + 12 * 8, kVotes = sizeof(ClassVotes), kRegionViews = 8;
+constexpr std::size_t kPointRecord = kPointHead + kVotes + kRegionViews + 1;
+
+// Rewrites a version 4 file as version 3 (no region views) or 2 (label and
+// confidence instead of the votes) did.
+std::string as_older_version(const std::string& v4, const std::vector<std::shared_ptr<MapPoint>>& points,
+                             int version) {
+  const std::size_t body = v4.size() - 8, first = body - points.size() * kPointRecord;
+  std::string old = v4.substr(0, first);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::size_t at = first + i * kRecord;
-    v2 += v3.substr(at, kHead);
-    const SemanticLabel label = points[i]->label();
-    v2.push_back(static_cast<char>(label.label));
-    v2.append(reinterpret_cast<const char*>(&label.confidence), sizeof(float));
-    v2.push_back(v3[at + kHead + kVotes]);
+    const std::size_t at = first + i * kPointRecord;
+    old += v4.substr(at, kPointHead);
+    if (version == 2) {
+      const SemanticLabel label = points[i]->label();
+      old.push_back(static_cast<char>(label.label));
+      old.append(reinterpret_cast<const char*>(&label.confidence), sizeof(float));
+    } else {
+      old += v4.substr(at + kPointHead, kVotes);
+    }
+    old.push_back(v4[at + kPointHead + kVotes + kRegionViews]);
   }
-  v2[8] = 2;
-  return test::with_map_checksum(v2);
+  old[8] = static_cast<char>(version);
+  return test::with_map_checksum(old);
 }
 
 // A hostile file with a valid checksum (issue 20): the loader checks what
 // the data means, naming the file and the field. Point records are the
-// file's last bytes before the checksum (see as_version2).
+// file's last bytes before the checksum (see kPointRecord).
 
 TEST_F(MapIo, HostileValuesWithAValidChecksumAreRejectedNamingTheField) {
-  constexpr std::size_t kHead = 8 + 8 + 4 + 2 * 8 + 12 * 8, kRecord = kHead + sizeof(ClassVotes) + 1;
+  constexpr std::size_t kRecord = kPointRecord;
   const std::string good = read_file(file);
   const std::size_t body = good.size() - 8, first = body - map.point_count() * kRecord;
   const auto load_edited = [&](const std::string& name, const std::function<void(std::string&)>& edit) {
@@ -202,8 +213,33 @@ TEST_F(MapIo, KeyframeImagesOfAnotherSizeThanTheCameraAreRejected) {
               AllOf(HasSubstr("sizes.fslmap"), HasSubstr("pyramid level is 128x96, expected 160x120")));
 }
 
+TEST_F(MapIo, Version3MapsLoadWithTheirVotesAndNoRegionViews) {
+  write_file(dir / "v3.fslmap", as_older_version(read_file(file), map.points(), 3));
+  Map loaded;
+  load_map(dir / "v3.fslmap", loaded, &camera);
+  const auto pa = map.points(), pb = loaded.points();
+  ASSERT_EQ(pa.size(), pb.size());
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    EXPECT_EQ(pa[i]->votes(), pb[i]->votes());
+    EXPECT_EQ(pb[i]->region_views(), MapPoint::RegionViews{});
+    EXPECT_FALSE(pb[i]->in_moving_region());
+  }
+}
+
+TEST_F(MapIo, MoreRegionViewsInARegionThanViewsAreRejected) {
+  std::string data = read_file(file).substr(0, read_file(file).size() - 8);
+  const std::size_t first = data.size() - map.point_count() * kPointRecord;
+  const std::uint32_t views = 1, in_region = 2;
+  data.replace(first + kPointHead + kVotes, 4, std::string(reinterpret_cast<const char*>(&views), 4));
+  data.replace(first + kPointHead + kVotes + 4, 4, std::string(reinterpret_cast<const char*>(&in_region), 4));
+  write_file(dir / "region.fslmap", test::with_map_checksum(data));
+  Map loaded;
+  EXPECT_THAT(error_of([&] { load_map(dir / "region.fslmap", loaded); }),
+              AllOf(HasSubstr("region.fslmap"), HasSubstr("more in a region than views")));
+}
+
 TEST_F(MapIo, Version2MapsLoadWithTheirLabels) {
-  write_file(dir / "v2.fslmap", as_version2(read_file(file), map.points()));
+  write_file(dir / "v2.fslmap", as_older_version(read_file(file), map.points(), 2));
   Map loaded;
   load_map(dir / "v2.fslmap", loaded, &camera);
   const auto pa = map.points(), pb = loaded.points();

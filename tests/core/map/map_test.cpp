@@ -33,6 +33,22 @@ TEST(MapPoint, LaterObservationsAreFusedIntoTheVoteSums) {
   EXPECT_FLOAT_EQ(p.votes()[2], 0.7f);
 }
 
+// A point is in a moving region when most of the views the detector looked
+// at saw it in one; a tie is not most.
+TEST(MapPoint, MostViewsInAMovingRegionPutThePointInOne) {
+  MapPoint p(0, {}, {});
+  EXPECT_FALSE(p.in_moving_region());
+  p.add_region_view(true);
+  EXPECT_TRUE(p.in_moving_region());
+  p.add_region_view(false);
+  EXPECT_FALSE(p.in_moving_region()) << "one of two views";
+  p.add_region_view(true);
+  EXPECT_TRUE(p.in_moving_region());
+  EXPECT_EQ(p.region_views(), (MapPoint::RegionViews{.views = 3, .in_region = 2}));
+  p.set_region_views({.views = 4, .in_region = 1});
+  EXPECT_FALSE(p.in_moving_region());
+}
+
 TEST(MapPoint, TiesGoToTheLowerClassId) {
   EXPECT_EQ(label_from_votes(votes_for({{5, 0.5f}, {3, 0.5f}})).label, 3);
   EXPECT_EQ(label_from_votes({}).label, kUnlabelled);
