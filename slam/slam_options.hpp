@@ -79,7 +79,7 @@ struct SemanticsOptions {
   // ... and so are points in regions the semantic worker finds dense with
   // calls of a moving class (semantics/worker/moving_regions.hpp): the
   // forest calls few of a close-up car's points car one by one, many of its
-  // region's. street-traffic with the forest's labels 8.70 -> 0.31 % (its
+  // region's. street-traffic with the forest's labels 8.70 -> 0.23 % (its
   // static twin 0.30 %); step 0: no regions (docs/benchmarks.md, session 25).
   semantics::MovingRegionOptions moving_regions;
 

@@ -7,7 +7,7 @@
 // is classified on a grid of cells too, each cell's call (the arg-max of its
 // votes times the class prior) marked where it is a moving class, the marks
 // smoothed (a Gaussian of `sigma_cells`), and a point lies in a moving
-// region where the smoothed density reaches `min_density`: a fifth of the
+// region where the smoothed density reaches `min_density`: a tenth of the
 // cells around it called a moving class. The grid's cells go through the
 // descriptor with the keyframe's points (its planes are computed once per
 // image), ~1200 more points on a 640 x 480 keyframe at a 16-pixel step.
@@ -23,7 +23,7 @@ namespace facadeslam::semantics {
 struct MovingRegionOptions {
   int step = 16;             // grid cell size, pixels; 0 = no region detection
   double sigma_cells = 3.0;  // smoothing of the moving calls, cells
-  double min_density = 0.2;  // share of (smoothed) moving calls that makes a region
+  double min_density = 0.1;  // share of (smoothed) moving calls that makes a region
 };
 
 class MovingRegions {

@@ -161,7 +161,8 @@ SemanticRun run_with_true_labels(const std::string& name) {
 // these close-up car points car one by one (20 % of the found ones by their
 // own votes, 1.3 % with a confidence of 0.5: 8.70 % with its labels alone),
 // but their regions are full of its car calls: with the moving regions
-// (semantics/worker/moving_regions.hpp) 0.31 % against the twin's 0.30 %.
+// (semantics/worker/moving_regions.hpp) 0.23 % against the twin's 0.30 %
+// (other renders of the scene, seeds 2 and 3: 1.6x and 1.3x their twins').
 // A perfect classifier (the renderer's true labels, no regions) shows what
 // the settings can do: cars left out of tracking and bundle adjustment, the
 // other unreliable classes weighed down to 0.1, 0.25 % (with cars weighed
