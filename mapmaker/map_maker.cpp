@@ -281,7 +281,7 @@ void MapMaker::remove_outlier_points() {
   const PointCullingOptions culling{.min_searches = options_.outlier_min_searches,
                                     .max_found_ratio = options_.outlier_max_found_ratio,
                                     .grace_keyframes = kSingleViewGraceKeyframes};
-  LeftOutPoint left_out;
+  IsLeftOut left_out;
   if (options_.left_out_of_ba.any())
     left_out = [this](const MapPoint& point) { return options_.left_out_of_ba.contains(point); };
   const std::vector<std::shared_ptr<MapPoint>> outliers =

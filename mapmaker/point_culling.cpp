@@ -6,7 +6,7 @@
 namespace facadeslam {
 namespace {
 
-struct Views {
+struct MeasuringKeyframes {
   int keyframes = 0;
   KeyFrame::Id newest = 0;  // the newest keyframe measuring the point
 };
@@ -16,15 +16,15 @@ struct Views {
 std::vector<std::shared_ptr<MapPoint>> points_to_cull(const std::vector<std::shared_ptr<KeyFrame>>& keyframes,
                                                       const std::vector<std::shared_ptr<MapPoint>>& points,
                                                       const PointCullingOptions& options,
-                                                      const LeftOutPoint& left_out) {
+                                                      const IsLeftOut& left_out) {
   // Measurement counts over all keyframes (the map maker, their only writer,
   // reads them without a lock).
-  std::unordered_map<MapPoint::Id, Views> views;
+  std::unordered_map<MapPoint::Id, MeasuringKeyframes> measured;
   KeyFrame::Id newest = 0;
   for (const auto& kf : keyframes) {
     newest = std::max(newest, kf->id());
     for (const auto& [id, m] : kf->measurements()) {
-      Views& v = views[id];
+      MeasuringKeyframes& v = measured[id];
       ++v.keyframes;
       v.newest = std::max(v.newest, kf->id());
     }
@@ -34,11 +34,12 @@ std::vector<std::shared_ptr<MapPoint>> points_to_cull(const std::vector<std::sha
   for (const auto& p : points) {
     const bool rarely_found = p->times_searched() >= static_cast<std::uint32_t>(options.min_searches) &&
                               p->times_found() < options.max_found_ratio * p->times_searched();
-    const auto it = views.find(p->id());
+    const auto it = measured.find(p->id());
     const bool too_few_views =
-        it == views.end() || (it->second.keyframes < 2 && !among_newest(p->source().keyframe_id));
-    const bool unused = left_out && it != views.end() && !among_newest(it->second.newest) && left_out(*p);
-    if (rarely_found || too_few_views || unused) cull.push_back(p);
+        it == measured.end() || (it->second.keyframes < 2 && !among_newest(p->source().keyframe_id));
+    const bool left_out_unmeasured =
+        left_out && it != measured.end() && !among_newest(it->second.newest) && left_out(*p);
+    if (rarely_found || too_few_views || left_out_unmeasured) cull.push_back(p);
   }
   return cull;
 }

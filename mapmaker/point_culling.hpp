@@ -4,11 +4,12 @@
 // - PTAM's outlier rule: the tracker searched for it at least `min_searches`
 //   times and found it less than `max_found_ratio` of them;
 // - too few views: fewer than two keyframes measure it, once its source
-//   keyframe is no longer among the newest `grace_keyframes` (a depth-prior
-//   point waits there for its second view);
-// - left out for its class (a moving class: the tracker does not search it,
-//   bundle adjustment does not use it) and measured by none of the newest
-//   `grace_keyframes`: nothing uses it any more, and neither rule above can
+//   keyframe is no longer among the last `grace_keyframes` made (keyframe
+//   ids: culled keyframes count) (a depth-prior point waits there for its
+//   second view);
+// - left out for its class (a moving class, or a moving region: the tracker
+//   does not search it, bundle adjustment does not use it) and measured by
+//   none of the last `grace_keyframes` made: nothing uses it any more, and neither rule above can
 //   see it. Under traffic such points were half the map (street-traffic with
 //   true labels: 997 of 1902 points). A parked car's points that the tracker
 //   does measure (it searches them where few other points are in view) keep
@@ -30,13 +31,13 @@ struct PointCullingOptions {
 
 // Whether a point is left out for its class (UnreliableLabels::contains of
 // the moving classes); empty: no point is.
-using LeftOutPoint = std::function<bool(const MapPoint&)>;
+using IsLeftOut = std::function<bool(const MapPoint&)>;
 
 // The points of `points` to remove, in their order. `keyframes`: all the
 // map's keyframes (their measurements say which keyframes see which point).
 std::vector<std::shared_ptr<MapPoint>> points_to_cull(const std::vector<std::shared_ptr<KeyFrame>>& keyframes,
                                                       const std::vector<std::shared_ptr<MapPoint>>& points,
                                                       const PointCullingOptions& options,
-                                                      const LeftOutPoint& left_out = {});
+                                                      const IsLeftOut& left_out = {});
 
 }  // namespace facadeslam

@@ -132,10 +132,12 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   options.unreliable_classes = read_classes(root, "unreliable_classes", options.unreliable_classes);
   options.moving_classes = read_classes(root, "moving_classes", options.moving_classes);
   if (const auto regions = root.optional_child("moving_regions")) {
-    semantics::MovingRegionOptions& r = options.moving_regions;
-    r.step = regions->get_int("step", Range::closed(0, 256), r.step);
-    r.sigma_cells = regions->get_double("sigma", Range::closed(0.1, 100), r.sigma_cells);
-    r.min_density = regions->get_double("min_density", Range::positive(1), r.min_density);
+    semantics::MovingRegionOptions& region_options = options.moving_regions;
+    region_options.step = regions->get_int("step", Range::closed(0, 256), region_options.step);
+    // Each halving of the step describes 4x the cells: 4 pixels is 16x the shipped 16.
+    if (region_options.step > 0 && region_options.step < 4) regions->fail("step", "0 (no regions) or 4 to 256 pixels");
+    region_options.sigma_cells = regions->get_double("sigma", Range::closed(0.1, 100), region_options.sigma_cells);
+    region_options.min_density = regions->get_double("min_density", Range::positive(1), region_options.min_density);
     regions->finish();
   }
   options.min_confidence = root.get_double("min_confidence", Range::closed(0, 1), options.min_confidence);

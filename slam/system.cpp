@@ -48,7 +48,8 @@ SlamOptions with_label_aware_tracking(SlamOptions options) {
   if (options.semantics.enabled) {
     const auto min_confidence = static_cast<float>(options.semantics.min_confidence);
     options.tracker.unreliable = {options.semantics.unreliable_classes, min_confidence};
-    options.tracker.moving = {options.semantics.moving_classes, min_confidence, options.semantics.moving_regions.step > 0};
+    const bool regions = options.semantics.moving_regions.step > 0;
+    options.tracker.moving = {options.semantics.moving_classes, min_confidence, regions};
     options.mapmaker.left_out_of_ba = options.tracker.moving;
     options.tracker.min_reliable_points = options.semantics.min_reliable_points;
     options.tracker.unreliable_weight = options.semantics.unreliable_weight;

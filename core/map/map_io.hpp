@@ -3,8 +3,9 @@
 //   magic "FSLAMMAP", u32 format version, camera (model, size, parameters),
 //   id counters, keyframes (frame index, timestamp, pose, depth stats,
 //   pyramid levels with their corners, colour image, measurements), points
-//   (source, geometry, label votes, moving-region views, flags), and a trailing FNV-1a checksum. The
-//   small blurry images are rebuilt from the pyramids on load.
+//   (source, geometry, label votes, moving-region views, flags), and a
+//   trailing FNV-1a checksum. The small blurry images are rebuilt from the
+//   pyramids on load.
 // Loading checks the magic, the version, the checksum and that the map was
 // made with the camera of the current run; each failure is an Error naming
 // the file and what was expected.

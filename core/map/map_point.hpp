@@ -109,7 +109,8 @@ class MapPoint {
   // class. A point most of whose views did is in a moving region, whatever
   // its own label: one by one the forest calls a close-up car's points
   // building or road, yet their region is full of car calls. Written by the
-  // semantic worker (add_region_view) or when loading a map (set_).
+  // semantic worker (add_region_view) or when loading a map
+  // (set_region_views).
   struct RegionViews {
     std::uint32_t views = 0;
     std::uint32_t in_region = 0;  // <= views

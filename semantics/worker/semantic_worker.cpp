@@ -118,7 +118,7 @@ void SemanticWorker::label(const KeyFramePoints& job) {
     // The moving-region grid's cells go through the descriptor with the
     // points: its planes are computed once per image.
     std::optional<MovingRegions> regions;
-    if (region_options_.step > 0) {
+    if (region_options_.step > 0 && moving_classes_.any()) {
       regions.emplace(colour.size(), region_options_);
       keypoints.insert(keypoints.end(), regions->cells().begin(), regions->cells().end());
     }

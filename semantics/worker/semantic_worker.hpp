@@ -59,7 +59,8 @@ class SemanticWorker {
   // Also detect regions of `moving_classes` (moving_regions.hpp) in each
   // keyframe and tell each point whether it lay in one
   // (MapPoint::add_region_view). Call before start(); throws Error for
-  // options out of range. step 0: no detection (the default).
+  // options out of range. step 0 or no moving class: no detection (the
+  // default).
   void use_moving_regions(const MovingRegionOptions& options, const ClassSet& moving_classes);
   // After each round of keyframes, give every labelled point of `map` the
   // label of its votes fused with its nearest points' and the geometric cue

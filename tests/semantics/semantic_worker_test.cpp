@@ -126,6 +126,50 @@ TEST_F(SemanticWorkerTest, AddsTheVotesOfTheShrunkKeyframeWithAContextScale) {
 // A point measured in a second keyframe gets that view's votes added to its
 // first view's: here the "second keyframe" sees each point where the first
 // saw another, so the fused votes are the two rows' sum.
+// Moving regions: the grid's cells go through the descriptor after the
+// points, so each point's votes are what they are without the regions, and
+// each point gets one region view, in a region exactly where the cells'
+// calls (by hand: the same descriptor and forest) make one. The photo has
+// no car, so its sky stands in for the moving class (the regions do not
+// care which class moves): points under it and points away from it.
+TEST_F(SemanticWorkerTest, MovingRegionsLeaveTheVotesAndGiveEachPointOneRegionView) {
+  const MovingRegionOptions options{.step = 16, .sigma_cells = 3.0, .min_density = 0.1};
+  const ClassSet moving = ClassSet().set(6);  // sky, see above
+  KeyFramePointsQueue queue;
+  SemanticWorker plain(model_, queue), with_regions(model_, queue);
+  with_regions.use_moving_regions(options, moving);
+  const KeyFramePoints a = job(true, 200), b = job(true, 200);
+  plain.label(a);
+  with_regions.label(b);
+
+  MovingRegions regions(colour_.size(), options);
+  auto descriptor = make_point_descriptor(model_.descriptor, model_.genome);
+  cv::Mat shares;
+  model_.forest.predict(descriptor->compute(colour_, regions.cells()), shares);
+  regions.set_calls(shares, model_.forest.classes(), SemanticWorker::all_ones(), moving);
+
+  std::size_t in_region = 0;
+  for (std::size_t i = 0; i < b.points.size(); ++i) {
+    const auto& [point, px] = b.points[i];
+    EXPECT_EQ(point->votes(), a.points[i].point->votes()) << "point " << i;
+    EXPECT_EQ(a.points[i].point->region_views().views, 0u);
+    const bool expected = regions.contains({static_cast<float>(px.x()), static_cast<float>(px.y())});
+    EXPECT_EQ(point->region_views(), (MapPoint::RegionViews{.views = 1, .in_region = expected ? 1u : 0u}))
+        << "point " << i;
+    EXPECT_EQ(point->in_moving_region(), expected);
+    in_region += expected;
+  }
+  EXPECT_GT(in_region, 0u) << "the photo's sky makes no region";
+  EXPECT_LT(in_region, b.points.size()) << "everything is a region";
+
+  // No moving class, no regions (and no cells described).
+  SemanticWorker no_moving(model_, queue);
+  no_moving.use_moving_regions(options, ClassSet());
+  const KeyFramePoints c = job(true, 20);
+  no_moving.label(c);
+  for (const auto& [point, px] : c.points) EXPECT_EQ(point->region_views().views, 0u);
+}
+
 TEST_F(SemanticWorkerTest, FusesTheVotesOfEveryKeyframeThatMeasuresAPoint) {
   KeyFramePointsQueue queue;
   SemanticWorker worker(model_, queue);

@@ -194,6 +194,8 @@ TEST(SemanticsOptions, RejectsBadValues) {
               AllOf(HasSubstr("semantics.yaml"), HasSubstr("moving_classes"), HasSubstr("lorry")));
   EXPECT_THAT(semantics_error("moving_classes: car\n"), HasSubstr("moving_classes"));
   EXPECT_THAT(semantics_error("moving_regions: {step: -1}\n"), HasSubstr("moving_regions.step"));
+  EXPECT_THAT(semantics_error("moving_regions: {step: 2}\n"),
+              AllOf(HasSubstr("moving_regions.step"), HasSubstr("0 (no regions) or 4 to 256 pixels")));
   EXPECT_THAT(semantics_error("moving_regions: {min_density: 0}\n"), HasSubstr("moving_regions.min_density"));
   EXPECT_THAT(semantics_error("moving_regions: {sigma: 0}\n"), HasSubstr("moving_regions.sigma"));
   EXPECT_THAT(semantics_error("moving_regions: {stepp: 8}\n"), HasSubstr("moving_regions.stepp"));

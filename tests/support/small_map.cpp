@@ -41,7 +41,8 @@ void build_test_map(Map& map, int n_points, const Camera& camera) {
       votes[static_cast<std::size_t>(i % 9)] = 0.5f + 0.01f * static_cast<float>(i);
       votes[static_cast<std::size_t>((i + 4) % 9)] = 0.25f;
       p->set_votes(votes);
-      p->set_region_views({.views = static_cast<std::uint32_t>(i % 4 + 1), .in_region = static_cast<std::uint32_t>(i % 2)});
+      p->set_region_views(
+          {.views = static_cast<std::uint32_t>(i % 4 + 1), .in_region = static_cast<std::uint32_t>(i % 2)});
     }
     for (std::size_t k = 0; k < measurements.size(); ++k)
       measurements[k][p->id()] = {i % 4, {20.0 + i + static_cast<double>(k), 30.25 + i}, k == 0};
