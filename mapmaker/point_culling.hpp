@@ -9,8 +9,8 @@
 //   second view);
 // - left out for its class (a moving class, or a moving region: the tracker
 //   does not search it, bundle adjustment does not use it) and measured by
-//   none of the last `grace_keyframes` made: nothing uses it any more, and neither rule above can
-//   see it. Under traffic such points were half the map (street-traffic with
+//   none of the last `grace_keyframes` made: nothing uses it any more, and
+//   neither rule above can see it. Under traffic such points were half the map (street-traffic with
 //   true labels: 997 of 1902 points). A parked car's points that the tracker
 //   does measure (it searches them where few other points are in view) keep
 //   being measured by new keyframes and stay.

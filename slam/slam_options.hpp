@@ -44,9 +44,9 @@ struct SemanticsOptions {
   bool sky_only_at_infinity = true;
   // The tracker weighs points labelled with one of these classes at
   // `min_confidence` or more (moving or unstable things) down in the pose
-  // update (unreliable_weight), and so does bundle adjustment unless they are
-  // of a moving class (below, left out of both). Default: car, vegetation,
-  // sky, various.
+  // update (unreliable_weight); bundle adjustment takes them at full weight,
+  // except those of a moving class (below), which both leave out. Default:
+  // car, vegetation, sky, various.
   ClassSet unreliable_classes{(1u << 2) | (1u << 7) | (1u << 6) | (1u << 0)};
   double min_confidence = 0.5;
   // Their weight in the pose update: 0 leaves them out of the search. Down-

@@ -73,12 +73,17 @@ void MapPoint::add_region_view(bool in_region) {
   std::lock_guard lock(votes_mutex_);
   ++region_views_.views;
   region_views_.in_region += in_region;
-  in_moving_region_.store(2 * region_views_.in_region > region_views_.views, std::memory_order_release);
+  publish_region_views();
 }
 
 void MapPoint::set_region_views(const RegionViews& views) {
   std::lock_guard lock(votes_mutex_);
   region_views_ = views;
+  publish_region_views();
+}
+
+void MapPoint::publish_region_views() {
+  // Most of the views, not half: a tie is no region.
   in_moving_region_.store(2 * region_views_.in_region > region_views_.views, std::memory_order_release);
 }
 

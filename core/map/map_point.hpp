@@ -143,6 +143,7 @@ class MapPoint {
   PatchSource view_;
   PointGeometry view_geometry_;
   void set_labels_from_votes();  // under votes_mutex_
+  void publish_region_views();   // under votes_mutex_: in_moving_region_ from region_views_
 
   // Label in the low byte, confidence bits above.
   std::atomic<std::uint64_t> packed_label_, packed_own_label_;

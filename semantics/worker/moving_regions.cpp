@@ -9,12 +9,16 @@
 
 namespace facadeslam::semantics {
 
-MovingRegions::MovingRegions(cv::Size size, const MovingRegionOptions& options) : options_(options) {
+void MovingRegions::check(const MovingRegionOptions& options) {
   const bool density_ok = options.min_density > 0.0 && options.min_density <= 1.0;
   if (options.step <= 0 || !(options.sigma_cells > 0.0) || !density_ok)
     throw Error("moving regions: a step > 0, sigma > 0 and a density in (0, 1], not step " +
                 std::to_string(options.step) + ", sigma " + std::to_string(options.sigma_cells) + ", density " +
                 std::to_string(options.min_density));
+}
+
+MovingRegions::MovingRegions(cv::Size size, const MovingRegionOptions& options) : options_(options) {
+  check(options);
   if (size.width <= 0 || size.height <= 0) throw Error("moving regions: an empty image");
   columns_ = (size.width + options.step - 1) / options.step;
   rows_ = (size.height + options.step - 1) / options.step;

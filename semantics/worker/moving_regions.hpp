@@ -28,6 +28,8 @@ struct MovingRegionOptions {
 
 class MovingRegions {
  public:
+  // Throws Error for options out of range (a step of 0 included: no grid).
+  static void check(const MovingRegionOptions& options);
   // The grid of an image of `size`; throws Error for options out of range.
   MovingRegions(cv::Size size, const MovingRegionOptions& options);
 

@@ -55,8 +55,8 @@ void SemanticWorker::use_context_scale(double scale) {
 }
 
 void SemanticWorker::use_moving_regions(const MovingRegionOptions& options, const ClassSet& moving_classes) {
-  // Checked here, before any keyframe comes: MovingRegions throws for bad options.
-  if (options.step > 0) static_cast<void>(MovingRegions(cv::Size(1, 1), options));
+  // Checked here, before any keyframe comes.
+  if (options.step > 0) MovingRegions::check(options);
   region_options_ = options;
   moving_classes_ = moving_classes;
 }
