@@ -50,7 +50,8 @@ const fs::path kDefaultSemanticsConfig = "configs/semantics.yaml";
 // still counts as one: require_replaceable_folder).
 const std::vector<std::string> kReplayOutputNames = {"trajectory.txt", "trajectory_online.txt", "keyframes.txt",
                                                      "map.ply",        "map.classes.json",      "map.fslmap",
-                                                     "report.json",    "trajectory.png",        "render"};
+                                                     "report.json",    "trajectory.png",        "render",
+                                                     "segments"};
 
 struct ReplayOptions {
   fs::path sequence, camera, config, out, gt, gt_labels, save_map, load_map;

@@ -37,4 +37,25 @@ std::optional<std::size_t> choose_epipolar_partner(const SE3d& T_new_w, double n
   return std::nullopt;
 }
 
+std::optional<std::size_t> choose_far_epipolar_partner(const SE3d& T_new_w, double new_mean_depth,
+                                                       const std::vector<SE3d>& others, std::optional<std::size_t> near,
+                                                       const EpipolarPartnerOptions& options) {
+  if (options.far_baseline <= 0.0) return std::nullopt;
+  const Eigen::Vector3d centre = T_new_w.inverse().translation();
+  const Eigen::Vector3d axis = optical_axis_w(T_new_w);
+  const double min_baseline = options.far_baseline * new_mean_depth;
+  const double min_cos = std::cos(deg_to_rad(options.max_axis_angle_deg));
+  std::optional<std::size_t> best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < others.size(); ++i) {
+    if (near && *near == i) continue;
+    const double distance = (others[i].inverse().translation() - centre).norm();
+    if (distance < min_baseline || distance >= best_distance) continue;
+    if (optical_axis_w(others[i]).dot(axis) < min_cos) continue;
+    best = i;
+    best_distance = distance;
+  }
+  return best;
+}
+
 }  // namespace facadeslam

@@ -23,11 +23,22 @@ namespace facadeslam {
 struct EpipolarPartnerOptions {
   double min_baseline = 0.02;         // x the new keyframe's mean scene depth
   double max_axis_angle_deg = 45.0;
+  // A second partner at least this far away (x the mean scene depth; 0:
+  // none). Moving forward, the near partner leaves the points ahead, which
+  // stay in view longest, without the parallax to triangulate them.
+  double far_baseline = 0.0;
 };
 
 // Index into `others` (their T_c_w), or nothing when `others` is empty.
 std::optional<std::size_t> choose_epipolar_partner(const SE3d& T_new_w, double new_mean_depth,
                                                    const std::vector<SE3d>& others,
                                                    const EpipolarPartnerOptions& options);
+
+// The far partner: the nearest keyframe sharing the view whose baseline is at
+// least `far_baseline` x the new keyframe's scene depth, other than `near`;
+// nothing when there is none or far_baseline is 0.
+std::optional<std::size_t> choose_far_epipolar_partner(const SE3d& T_new_w, double new_mean_depth,
+                                                       const std::vector<SE3d>& others, std::optional<std::size_t> near,
+                                                       const EpipolarPartnerOptions& options);
 
 }  // namespace facadeslam

@@ -56,7 +56,8 @@ NewPoints epipolar_new_points(Map& map, const Camera& camera, const std::shared_
   const SE3d T_other_new = T_other_w * T_new_w.inverse();
   const double depth_min =
       std::max(options.min_depth_fraction * mean_depth, mean_depth - options.depth_range_sigmas * depth_sigma);
-  const double depth_max = mean_depth + options.depth_range_sigmas * std::max(depth_sigma, 0.25 * mean_depth);
+  const double depth_max = std::max(mean_depth + options.depth_range_sigmas * std::max(depth_sigma, 0.25 * mean_depth),
+                                    options.min_far_depth_factor * mean_depth);
 
   NewPoints created;
   EpipolarSearchStats local;

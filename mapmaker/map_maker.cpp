@@ -128,7 +128,7 @@ void MapMaker::update_depth_stats(KeyFrame& keyframe) {
   map_.update([&](MapEditor& edit) { edit.set_depth_stats(keyframe, median, sigma); });
 }
 
-std::shared_ptr<KeyFrame> MapMaker::epipolar_partner(const KeyFrame& keyframe) const {
+std::vector<std::shared_ptr<KeyFrame>> MapMaker::epipolar_partners(const KeyFrame& keyframe) const {
   // Poses and depths: the map maker, their only writer, reads them without a lock.
   std::vector<std::shared_ptr<KeyFrame>> others;
   std::vector<SE3d> poses;
@@ -137,8 +137,13 @@ std::shared_ptr<KeyFrame> MapMaker::epipolar_partner(const KeyFrame& keyframe) c
       others.push_back(kf);
       poses.push_back(kf->T_c_w());
     }
-  const auto choice = choose_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, options_.epipolar_partner);
-  return choice ? others[*choice] : nullptr;
+  const auto near = choose_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, options_.epipolar_partner);
+  if (!near) return {};
+  std::vector<std::shared_ptr<KeyFrame>> partners{others[*near]};
+  if (const auto far = choose_far_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, near,
+                                                   options_.epipolar_partner))
+    partners.push_back(others[*far]);
+  return partners;
 }
 
 void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
@@ -161,11 +166,15 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
     });
 
   NewPoints created;
-  const auto other = epipolar_partner(*kf);
-  if (other) {
+  // Each partner's points are published before the next search, so its
+  // candidates keep away from them.
+  std::vector<std::pair<std::shared_ptr<KeyFrame>, NewPoints>> by_partner;
+  for (const auto& other : epipolar_partners(*kf)) {
     EpipolarSearchStats es;
-    created = epipolar_new_points(map_, camera_, kf, other, options_.epipolar, &es);
-    map_.add(created);
+    NewPoints found = epipolar_new_points(map_, camera_, kf, other, options_.epipolar, &es);
+    map_.add(found);
+    created.append(NewPoints{found.points, {}});
+    by_partner.emplace_back(other, std::move(found));
     const auto& by_level = es.triangulated_per_level;
     spdlog::debug(
         "keyframe {} (frame {}): {} tracked, epipolar search with keyframe {}: {} tried, {} matched, {} new "
@@ -199,7 +208,7 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   // The semantic worker gets every point the new keyframe measures, and the
   // partner keyframe's measurements of the points it helped create.
   hand_off(kf);
-  hand_off(other, &created);
+  for (const auto& [other, found] : by_partner) hand_off(other, &found);
   cull_redundant_keyframes(kf->id());
 }
 

@@ -98,8 +98,9 @@ class MapMaker {
   // Each point's weight in bundle adjustment (0: MapMakerOptions::left_out_of_ba);
   // none when labels are ignored.
   PointWeight ba_point_weight() const;
-  // The keyframe `keyframe` searches for new points against (epipolar_partner.hpp).
-  std::shared_ptr<KeyFrame> epipolar_partner(const KeyFrame& keyframe) const;
+  // The keyframes `keyframe` searches for new points against, the near
+  // partner first, then the far one if any (epipolar_partner.hpp).
+  std::vector<std::shared_ptr<KeyFrame>> epipolar_partners(const KeyFrame& keyframe) const;
   // Queues the keyframe's measurements (only those of `only`'s points, if
   // given) for the semantic worker.
   void hand_off(const std::shared_ptr<KeyFrame>& keyframe, const NewPoints* only = nullptr);

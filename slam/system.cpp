@@ -175,12 +175,13 @@ void System::reset_map(const Frame& frame) {
     map_maker_.stop();
     if (worker_) worker_->stop();
   }
+  // The threads are stopped: the map holds still for its poses to be kept.
+  if (trajectory_.size() > 0) earlier_segments_.push_back({final_trajectory(), online_trajectory()});
   queue_.reopen();
   new_points_.reopen();
   map_.clear();
   map_maker_.reset();
   tracker_.reset();
-  poses_discarded_ += trajectory_.size();
   trajectory_.clear();
   initialiser_.reset();
   initialiser_.add_frame(frame);  // the new reference
@@ -226,11 +227,12 @@ void System::log_tracking(const FrameReport& report) const {
   const TrackingResult& t = report.tracking;
   const SearchCounts& c = t.fine_counts;
   spdlog::debug(
-      "frame {}: {} ({}), coarse {}/{}, fine {}/{} of {} projected (no template {}, no corner {}, zmssd {}, "
-      "sub-pixel {}, outliers {}), rms {:.2f} px, {:.2f}+{:.2f}+{:.2f}+{:.2f} ms{}",
+      "frame {}: {} ({}), coarse {}/{}, fine {}/{} of {} projected ({} in view, {} bad warp, {} dropped; "
+      "no template {}, no corner {}, zmssd {}, sub-pixel {}, outliers {}), rms {:.2f} px, "
+      "predicted within {:.2f} deg {:.3f}, {:.2f}+{:.2f}+{:.2f}+{:.2f} ms{}",
       report.index, to_string(report.status), to_string(t.quality), t.coarse_found, t.coarse_searched, t.fine_found,
-      t.fine_searched, c.projected, c.template_invalid, c.no_candidate, c.score_too_high, c.subpixel_failed,
-      c.outliers, t.inlier_rms_px, report.pyramid_ms, t.timings.coarse_ms, t.timings.fine_ms, t.timings.pose_ms,
+      t.fine_searched, c.projected, c.in_view, c.bad_warp, t.points_dropped, c.template_invalid, c.no_candidate, c.score_too_high, c.subpixel_failed,
+      c.outliers, t.inlier_rms_px, t.prediction_error_deg, t.prediction_error_m, report.pyramid_ms, t.timings.coarse_ms, t.timings.fine_ms, t.timings.pose_ms,
       t.keyframe_requested ? ", keyframe requested" : "");
 }
 

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "core/camera/camera.hpp"
 #include "core/image/frame.hpp"
@@ -49,6 +50,13 @@ struct FrameReport {
   double total_ms = 0.0;
 };
 
+// The poses of one map, from its initialisation to its reset (or the end):
+// a monocular map has its own scale and origin, so segments are not joined.
+struct TrajectorySegment {
+  Trajectory final;   // recomposed from the map as it was at its reset (System::final_trajectory)
+  Trajectory online;  // as tracked
+};
+
 class System {
  public:
   System(Camera camera, SlamOptions options);
@@ -72,9 +80,10 @@ class System {
   Trajectory final_trajectory() const;
 
   bool initialised() const { return initialised_; }
-  // Maps given up so far, and the poses that went with them.
+  // Maps given up so far, and the poses each of them tracked, in order (the
+  // current map's are final_trajectory() and online_trajectory()).
   std::size_t map_resets() const { return map_resets_; }
-  std::size_t poses_discarded_by_resets() const { return poses_discarded_; }
+  const std::vector<TrajectorySegment>& earlier_segments() const { return earlier_segments_; }
   const Map& map() const { return map_; }
   const Camera& camera() const { return camera_; }
   MapMakerStats map_maker_stats() const { return map_maker_.stats(); }
@@ -106,7 +115,8 @@ class System {
   bool initialised_ = false;
   std::size_t initialised_at_ = 0;  // the frame the map was initialised on
   bool map_loaded_ = false;  // a loaded map is relocalised against, never reset
-  std::size_t map_resets_ = 0, poses_discarded_ = 0;
+  std::size_t map_resets_ = 0;
+  std::vector<TrajectorySegment> earlier_segments_;
   // Keyframe candidates the tracker has asked for (the map maker's count of
   // those done at start_tracking, plus one per request): what
   // SlamOptions::max_keyframes_behind waits for.

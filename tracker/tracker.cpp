@@ -68,7 +68,8 @@ double Tracker::label_weight(const MapPoint& point) const {
 }
 
 std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
-                                                     const SE3d& T_c_w, int* dropped) const {
+                                                     const SE3d& T_c_w, int* dropped,
+                                                     SearchCounts* counts) const {
   std::vector<Candidate> out, left_out;
   out.reserve(points.size());
   const Eigen::Matrix3d R_c_w = T_c_w.rotation_matrix();
@@ -78,9 +79,13 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
     if (p_c.z() <= 1e-6) continue;
     const Eigen::Vector2d px = camera_.project(p_c);
     if (!camera_.in_image(px, kProjectionBorder)) continue;
+    if (counts) ++counts->in_view;
     const Eigen::Matrix2d warp = patch::patch_warp(p_c, R_c_w, points[i].view_geometry, camera_);
     const int level = patch::choose_search_level(warp.determinant(), options_.templates);
-    if (level < 0) continue;
+    if (level < 0) {
+      if (counts) ++counts->bad_warp;
+      continue;
+    }
     // Down-weighted points are searched like any other (pose_measurements
     // gives them their weight); only a weight of 0 leaves them out.
     const bool left = label_weight(*points[i].point) <= 0.0;
@@ -225,7 +230,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
 
   // Fine stage: all levels, tight radius, from the coarse pose.
   const Stopwatch t0;
-  std::vector<Candidate> candidates = project_map(points, T_c_w, &result.points_dropped);
+  std::vector<Candidate> candidates = project_map(points, T_c_w, &result.points_dropped, &result.fine_counts);
   std::shuffle(candidates.begin(), candidates.end(), rng);
   result.fine_counts.projected = static_cast<int>(candidates.size());
   std::vector<TrackedMeasurement> found = search(points, candidates, image, fine_radius, options_.fine_max_points,
@@ -339,6 +344,9 @@ TrackingResult Tracker::track(const Frame& frame) {
   TrackingResult result;
   const SE3d predicted = SE3d::exp(options_.velocity_decay * velocity_) * T_c_w_;
   auto inliers = track_from(predicted, frame, result);
+  const SE3d correction = result.T_c_w * predicted.inverse();
+  result.prediction_error_deg = rad_to_deg(correction.so3().log().norm());
+  result.prediction_error_m = (result.T_c_w.inverse().translation() - predicted.inverse().translation()).norm();
   // A first bad frame, or one whose points sit far from where the pose puts
   // them: perhaps the view jumped, and a relocalised pose that tracks well
   // is worth its time.

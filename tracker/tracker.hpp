@@ -34,6 +34,8 @@ struct StageTimings {
 
 // Why the fine stage's searches failed (diagnostics, --verbose).
 struct SearchCounts {
+  int in_view = 0;           // map points in front of the camera and inside the image
+  int bad_warp = 0;          // ... whose patch warp fits no search level (too strong a scale change)
   int projected = 0;         // map points projecting into the image with a usable warp
   int template_invalid = 0;  // no template (outside the source image, textureless)
   int no_candidate = 0;      // no FAST corner within the radius
@@ -54,6 +56,9 @@ struct TrackingResult {
   int points_down_weighted = 0;  // found, of an unreliable or moving class: a lower weight in the pose update
   int points_verified = 0;       // ... of which the pose put within unreliable_verify_px: full weight after all
   double inlier_rms_px = 0;
+  // How far the pose found lies from the motion model's prediction
+  // (rotation, and camera centre in map units): what the search radii must cover.
+  double prediction_error_deg = 0, prediction_error_m = 0;
   SearchCounts fine_counts;
   StageTimings timings;
 };
@@ -85,7 +90,7 @@ class Tracker {
   // of weight 0 (moving classes; counted in `dropped`, if given) where enough
   // others are in view.
   std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w,
-                                     int* dropped = nullptr) const;
+                                     int* dropped = nullptr, SearchCounts* counts = nullptr) const;
   // A point's prior weight from its label: 0 for a moving class, the
   // unreliable weight for an unreliable one, else 1.
   double label_weight(const MapPoint& point) const;

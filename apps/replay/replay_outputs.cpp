@@ -107,6 +107,35 @@ void add_ate_figures(Json& out, const Trajectory& gt, const Trajectory& estimate
   }
 }
 
+// Every map's poses when maps were reset: segments/N/trajectory.txt and
+// trajectory_online.txt, N = 1, 2, ... in order, the last being the current
+// map's (the same as trajectory.txt). Each has its own scale and origin, so
+// each is scored against the ground truth on its own. Returns the report's
+// list of segments.
+Json write_trajectory_segments(const std::filesystem::path& folder, const System& system, const Trajectory& gt) {
+  std::vector<TrajectorySegment> segments = system.earlier_segments();
+  segments.push_back({system.final_trajectory(), system.online_trajectory()});
+  Json out = Json::array();
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const TrajectorySegment& segment = segments[i];
+    const std::filesystem::path dir = folder / std::to_string(i + 1);
+    std::filesystem::create_directories(dir);
+    write_tum_trajectory(dir / "trajectory.txt", segment.final);
+    write_tum_trajectory(dir / "trajectory_online.txt", segment.online);
+    const std::string file = (std::filesystem::path("segments") / std::to_string(i + 1) / "trajectory.txt").string();
+    Json entry = Json::object();
+    entry["file"] = file;
+    entry["poses"] = segment.final.size();
+    if (!segment.final.empty()) {
+      entry["first_timestamp"] = segment.final.front().timestamp;
+      entry["last_timestamp"] = segment.final.back().timestamp;
+    }
+    if (!gt.empty() && segment.final.size() >= 3) add_ate_figures(entry, gt, segment.final, file, {});
+    out.push_back(entry);
+  }
+  return out;
+}
+
 Json mapping_summary(const MapMakerStats& stats) {
   Json mapping = Json::object();
   mapping["points_created"] = stats.points_created;
@@ -152,7 +181,6 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   // Maps given up (lost early or for long) and the tracked poses dropped
   // with them: the trajectories hold the last map's frames only.
   report["map_resets"] = system.map_resets();
-  report["poses_discarded_by_resets"] = system.poses_discarded_by_resets();
   report["keyframes"] = system.map().keyframe_count();
   report["points"] = cloud_points;
   Json timings = log.timings();
@@ -172,6 +200,11 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
     Json ate_online = Json::object();
     add_ate_figures(ate_online, gt, online, "trajectory_online.txt", {});
     report["ate_online"] = ate_online;
+  }
+  if (!system.earlier_segments().empty()) {
+    const Trajectory gt = paths.gt.empty() ? Trajectory{}
+                                           : repeat_trajectory(read_trajectory(paths.gt), read_stats.pass_time_offsets_s);
+    report["trajectory_segments"] = write_trajectory_segments(paths.out / "segments", system, gt);
   }
   write_json(paths.out / "report.json", report);
   return {report, cloud_points};

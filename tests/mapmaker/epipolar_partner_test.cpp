@@ -64,5 +64,19 @@ TEST(EpipolarPartner, BaselineScalesWithSceneDepth) {
   EXPECT_EQ(choose_epipolar_partner(camera_at({0, 0, 0}, 0), 10.0, others, {}), 1u);
 }
 
+TEST(EpipolarPartner, FarPartnerIsTheNearestBeyondItsBaselineThatSharesTheView) {
+  // Driving forward along x: keyframes 1, 2, 4 and 7 m back, one 5 m back looking sideways.
+  const std::vector<SE3d> others = {camera_at({-1, 0, 0}, 0), camera_at({-2, 0, 0}, 0), camera_at({-4, 0, 0}, 0),
+                                    camera_at({-5, 0, 0}, 90), camera_at({-7, 0, 0}, 0)};
+  EpipolarPartnerOptions options;
+  EXPECT_FALSE(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 0, options)) << "off by default";
+  options.far_baseline = 0.3;  // 3 m in a street 10 m deep
+  EXPECT_EQ(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 0, options), 2u);
+  // Never the near partner itself, and nothing when no keyframe is far enough.
+  EXPECT_EQ(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 2, options), 4u);
+  options.far_baseline = 1.0;
+  EXPECT_FALSE(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 0, options));
+}
+
 }  // namespace
 }  // namespace facadeslam

@@ -182,8 +182,8 @@ TEST(System, SemanticWorkerLabelsTheNewPoints) {
 // A map lost within its first keyframes is a bad start, not worth keeping
 // (slam.yaml's map_reset): black frames soon after initialisation make the
 // young map lost; after young_map_lost_frames it is reset, start-up begins
-// again on the real images, and the trajectories hold the new map's frames
-// only. Both modes: threaded, the reset stops and restarts the map maker's
+// again on the real images; the trajectories hold the new map's frames, and
+// the first map's poses are kept as a segment of their own. Both modes: threaded, the reset stops and restarts the map maker's
 // thread (the ThreadSanitizer build runs this test too).
 TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
   test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 100);
@@ -213,8 +213,14 @@ TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
     ASSERT_TRUE(system.initialised());
     const FrameReport& last = log.frames.back();
     EXPECT_TRUE(last.has_pose) << to_string(last.status);
-    EXPECT_GE(system.poses_discarded_by_resets(), 3u);  // the reference, the initial frame, the frames before the black
-    // Only the new map's frames, all after the black ones.
+    // The first map's poses are kept as a segment of their own: the
+    // reference, the initial frame, the frames before the black ones.
+    ASSERT_EQ(system.earlier_segments().size(), 1u);
+    const TrajectorySegment& first = system.earlier_segments().front();
+    EXPECT_GE(first.final.size(), 3u);
+    EXPECT_EQ(first.online.size(), first.final.size());
+    EXPECT_LT(first.final.back().timestamp, scene.timestamp(black_from + options.reset.young_map_lost_frames));
+    // The current map's trajectories: only its frames, all after the black ones.
     const Trajectory online = system.online_trajectory(), final = system.final_trajectory();
     ASSERT_GE(final.size(), 3u);
     EXPECT_EQ(online.size(), final.size());
