@@ -211,7 +211,7 @@ int run_replay(ReplayOptions o) {
       write_replay_outputs({staged.path(), o.save_map.empty() ? staged.path() / "map.fslmap" : staged.staged(o.save_map), o.gt},
                            info, log, system, source->stats());
   staged.commit();
-  std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalisations, %zu map resets, %zu keyframes, "
+  std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalised, %zu map resets, %zu keyframes, "
               "%zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map_resets(), system.map().keyframe_count(),
               outputs.cloud_points, o.out.string().c_str());

@@ -58,4 +58,10 @@ std::optional<std::size_t> choose_far_epipolar_partner(const SE3d& T_new_w, doub
   return best;
 }
 
+bool moving_forward(const SE3d& T_new_w, const SE3d& T_near_w, const EpipolarPartnerOptions& options) {
+  const Eigen::Vector3d motion = T_new_w.inverse().translation() - T_near_w.inverse().translation();
+  if (motion.norm() < 1e-12) return false;
+  return motion.normalized().dot(optical_axis_w(T_new_w)) >= std::cos(deg_to_rad(options.far_max_motion_angle_deg));
+}
+
 }  // namespace facadeslam

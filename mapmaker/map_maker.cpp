@@ -140,6 +140,7 @@ std::vector<std::shared_ptr<KeyFrame>> MapMaker::epipolar_partners(const KeyFram
   const auto near = choose_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, options_.epipolar_partner);
   if (!near) return {};
   std::vector<std::shared_ptr<KeyFrame>> partners{others[*near]};
+  if (!moving_forward(keyframe.T_c_w(), poses[*near], options_.epipolar_partner)) return partners;
   if (const auto far = choose_far_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, near,
                                                    options_.epipolar_partner))
     partners.push_back(others[*far]);
@@ -169,9 +170,14 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   // Each partner's points are published before the next search, so its
   // candidates keep away from them.
   std::vector<std::pair<std::shared_ptr<KeyFrame>, NewPoints>> by_partner;
-  for (const auto& other : epipolar_partners(*kf)) {
+  const auto partners = epipolar_partners(*kf);
+  // Moving forward (a second, far partner): the search reaches out to the
+  // far points ahead; otherwise PTAM's depth range.
+  EpipolarSearchOptions search = options_.epipolar;
+  if (partners.size() < 2) search.min_far_depth_factor = 0.0;
+  for (const auto& other : partners) {
     EpipolarSearchStats es;
-    NewPoints found = epipolar_new_points(map_, camera_, kf, other, options_.epipolar, &es);
+    NewPoints found = epipolar_new_points(map_, camera_, kf, other, search, &es);
     map_.add(found);
     created.append(NewPoints{found.points, {}});
     by_partner.emplace_back(other, std::move(found));

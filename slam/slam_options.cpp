@@ -68,10 +68,14 @@ void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m
       c.get_double("epipolar_partner_min_baseline", Range::non_negative(10), m.epipolar_partner.min_baseline);
   m.epipolar_partner.max_axis_angle_deg = c.get_double("epipolar_partner_max_angle_deg", Range::closed(1, 180),
                                                        m.epipolar_partner.max_axis_angle_deg);
+  m.epipolar.min_parallax_deg =
+      c.get_double("epipolar_min_parallax_deg", Range::closed(0, 45), m.epipolar.min_parallax_deg);
   m.epipolar.min_far_depth_factor =
       c.get_double("epipolar_min_far_depth", Range::non_negative(1000), m.epipolar.min_far_depth_factor);
   m.epipolar_partner.far_baseline =
       c.get_double("epipolar_far_partner_baseline", Range::non_negative(10), m.epipolar_partner.far_baseline);
+  m.epipolar_partner.far_max_motion_angle_deg = c.get_double(
+      "epipolar_far_partner_max_motion_angle_deg", Range::closed(0, 180), m.epipolar_partner.far_max_motion_angle_deg);
   m.outlier_min_searches = c.get_int("outlier_min_searches", Range::closed(1, 100000), m.outlier_min_searches);
   m.outlier_max_found_ratio = c.get_double("outlier_max_found_ratio", Range::closed(0, 1), m.outlier_max_found_ratio);
   m.culling.enabled = c.get_bool("cull_keyframes", m.culling.enabled);

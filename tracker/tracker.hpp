@@ -51,6 +51,8 @@ struct TrackingResult {
   bool relocalised = false;    // tracking resumed on this frame after a loss
   bool keyframe_requested = false;
   int coarse_searched = 0, coarse_found = 0;
+  bool coarse_pose_used = false;  // the fine stage started from the coarse stage's pose
+  bool coarse_pose_rejected = false;  // ... which failed where the motion model's prediction did better
   int fine_searched = 0, fine_found = 0;
   int points_dropped = 0;        // projecting into the image, but of weight 0 (moving class): not searched
   int points_down_weighted = 0;  // found, of an unreliable or moving class: a lower weight in the pose update
@@ -112,9 +114,10 @@ class Tracker {
                                          const std::vector<Candidate>& candidates,
                                          const patch::SearchImage& image, double radius_level0, int max_points,
                                          int& searched, SearchCounts* counts) const;
-  // The coarse + fine stages and pose updates from `T_start`; fills `result`.
-  std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const Frame& frame,
-                                             TrackingResult& result);
+  // The coarse (unless `coarse` is false) + fine stages and pose updates
+  // from `T_start`; fills `result`.
+  std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,
+                                             bool coarse = true);
   // A pose for a lost frame: the small blurry image's, else ORB + PnP's;
   // either only if the normal search from it tracks well.
   std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> relocalise(const Frame& frame);

@@ -21,12 +21,18 @@ Json timing_summary(std::vector<double> ms) {
 
 void ReplayLog::add(const FrameReport& r, bool initialised) {
   ++frames;
-  if (r.has_pose) {
+  // A relocalised frame came back after a loss: it is counted as such, not
+  // as tracked (the loss it ends must not be hidden).
+  if (r.status == FrameStatus::relocalised) {
+    ++relocalisations;
+  } else if (r.has_pose) {
     ++tracked;
   } else if (initialised) {
     ++lost;
   }
-  relocalisations += r.status == FrameStatus::relocalised;
+  after_initialisation += r.status == FrameStatus::tracking || r.status == FrameStatus::relocalised ||
+                          r.status == FrameStatus::lost;
+  tracked_after_initialisation += r.status == FrameStatus::tracking;
   points_dropped += static_cast<std::size_t>(r.tracking.points_dropped);
   points_down_weighted += static_cast<std::size_t>(r.tracking.points_down_weighted);
   points_verified += static_cast<std::size_t>(r.tracking.points_verified);

@@ -22,7 +22,12 @@ struct ReplayLog {
   // A resource sample every this many frames.
   static constexpr std::size_t kSampleEvery = 100;
 
+  // tracked: frames with a pose (the initialised ones too) except the
+  // relocalised ones, which `relocalisations` counts.
   std::size_t frames = 0, tracked = 0, lost = 0, relocalisations = 0;
+  // Frames given to the tracker (after the map was initialised), and those
+  // of them it tracked.
+  std::size_t after_initialisation = 0, tracked_after_initialisation = 0;
   // Of unreliable classes, summed over the frames: not searched / down-weighted.
   std::size_t points_dropped = 0, points_down_weighted = 0, points_verified = 0;
   std::vector<double> pyramid_ms, coarse_ms, fine_ms, pose_ms, snapshot_ms, tracker_ms, total_ms;

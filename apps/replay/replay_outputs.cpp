@@ -178,6 +178,11 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["frames_lost"] = log.lost;
   report["frames_corrupt_skipped"] = read_stats.frames_skipped_corrupt;
   report["relocalisations"] = log.relocalisations;
+  report["frames_after_initialisation"] = log.after_initialisation;
+  report["tracked_share_after_initialisation"] =
+      log.after_initialisation ? static_cast<double>(log.tracked_after_initialisation) /
+                                     static_cast<double>(log.after_initialisation)
+                               : 0.0;
   // Maps given up (lost early or for long) and the tracked poses dropped
   // with them: the trajectories hold the last map's frames only.
   report["map_resets"] = system.map_resets();

@@ -69,13 +69,24 @@ TEST(EpipolarPartner, FarPartnerIsTheNearestBeyondItsBaselineThatSharesTheView) 
   const std::vector<SE3d> others = {camera_at({-1, 0, 0}, 0), camera_at({-2, 0, 0}, 0), camera_at({-4, 0, 0}, 0),
                                     camera_at({-5, 0, 0}, 90), camera_at({-7, 0, 0}, 0)};
   EpipolarPartnerOptions options;
-  EXPECT_FALSE(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 0, options)) << "off by default";
+  options.far_baseline = 0.0;
+  EXPECT_FALSE(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 0, options)) << "0: none";
   options.far_baseline = 0.3;  // 3 m in a street 10 m deep
   EXPECT_EQ(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 0, options), 2u);
   // Never the near partner itself, and nothing when no keyframe is far enough.
   EXPECT_EQ(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 2, options), 4u);
   options.far_baseline = 1.0;
   EXPECT_FALSE(choose_far_epipolar_partner(camera_at({0, 0, 0}, 0), kDepth, others, 0, options));
+}
+
+TEST(EpipolarPartner, MovingForwardIsMotionAlongTheOpticalAxis) {
+  const EpipolarPartnerOptions options;  // within 45 degrees
+  // Looking along +x: driving forward from 1 m back, then sideways from 1 m to the right.
+  EXPECT_TRUE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({-1, 0, 0}, 0), options));
+  EXPECT_TRUE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({-1, -0.5, 0}, 0), options));  // 27 degrees off
+  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({0, -1, 0}, 0), options));    // a walk along facades
+  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({1, 0, 0}, 0), options));     // backing up
+  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 30), camera_at({0, 0, 0}, 0), options));    // turning on the spot
 }
 
 }  // namespace
