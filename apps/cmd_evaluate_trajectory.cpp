@@ -7,6 +7,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "core/trajectory/kitti_relative_error.hpp"
 #include "core/trajectory/metrics.hpp"
 #include "core/trajectory/top_view.hpp"
 #include "core/trajectory/trajectory_io.hpp"
@@ -23,10 +24,46 @@ struct Options {
   std::string format = "auto";
   std::string plane = "auto";
   double max_dt = kDefaultMaxTimeDifference;
+  double rate = 0.0;  // frames per second of KITTI files without a times file; 0: none given
   int rpe_delta = 1;
 };
 
-void print_table(const Options& o, const TrajectoryEvaluation& e) {
+// A KITTI file carries no times of its own. Two such files pair line by
+// line (the devkit's way); paired with a file that has times (TUM, or KITTI
+// with a times file or --rate), it needs times too, or every pose would be
+// matched by its line number against seconds.
+void require_comparable_clocks(const Options& o, TrajectoryFormat gt_format, TrajectoryFormat est_format) {
+  const bool gt_untimed = gt_format == TrajectoryFormat::kitti && o.gt_times.empty() && o.rate == 0.0;
+  const bool est_untimed = est_format == TrajectoryFormat::kitti && o.est_times.empty() && o.rate == 0.0;
+  if (gt_untimed == est_untimed) return;
+  const std::string option = gt_untimed ? "--gt-times" : "--est-times";
+  const std::string untimed = (gt_untimed ? o.gt : o.est).string();
+  const std::string timed = (gt_untimed ? o.est : o.gt).string();
+  throw CLI::ValidationError(option, untimed + " is a KITTI pose file without timestamps and " + timed +
+                                         " has timestamps: pass " + option +
+                                         " FILE (one time per pose, KITTI's times.txt) or --rate HZ");
+}
+
+TrajectoryFormat format_of(const std::filesystem::path& path, TrajectoryFormat format) {
+  return format == TrajectoryFormat::auto_detect ? detect_trajectory_format(path) : format;
+}
+
+void print_kitti_table(const Options& o, const TrajectoryEvaluation& e, const KittiRelativeError& k) {
+  std::printf("  KITTI relative error (devkit segments, on the estimate aligned with %s, scale %.6f):\n",
+              o.align.c_str(), e.scale);
+  if (!k.has_segments()) {
+    std::printf("    %s\n", k.no_segments_reason().c_str());
+    return;
+  }
+  std::printf("    %8s %7s %14s %18s\n", "length", "pairs", "translation", "rotation");
+  for (const KittiLengthError& l : k.per_length)
+    std::printf("    %6.0f m %7zu %12.4f %% %10.4f deg/100 m\n", l.length_m, l.pairs, l.translation_percent,
+                l.rotation_deg_per_100m);
+  std::printf("    %8s %7zu %12.4f %% %10.4f deg/100 m\n", "all", k.pairs, k.translation_percent,
+              k.rotation_deg_per_100m);
+}
+
+void print_table(const Options& o, const TrajectoryEvaluation& e, const KittiRelativeError& k) {
   std::printf("trajectory evaluation: %s vs %s\n", o.est.string().c_str(), o.gt.string().c_str());
   std::printf("  %-22s %zu (|dt| <= %g s)\n", "pairs", e.pairs, o.max_dt);
   std::printf("  %-22s %s\n", "alignment", o.align.c_str());
@@ -38,6 +75,7 @@ void print_table(const Options& o, const TrajectoryEvaluation& e) {
   std::printf("  %-22s %.6f m  (poses %d apart)\n", "RPE translation RMSE", e.rpe_trans_rmse_m, o.rpe_delta);
   std::printf("  %-22s %.6f deg\n", "RPE rotation RMSE", e.rpe_rot_rmse_deg);
   std::printf("  %-22s %.6f m\n", "path length (gt)", e.path_length_m);
+  print_kitti_table(o, e, k);
   std::fflush(stdout);
 }
 
@@ -48,14 +86,19 @@ void run(const Options& o) {
   options.max_dt = o.max_dt;
   options.rpe_delta = static_cast<std::size_t>(o.rpe_delta);
 
-  const Trajectory gt = read_trajectory(o.gt, format, o.gt_times);
-  const Trajectory est = read_trajectory(o.est, format, o.est_times);
+  require_comparable_clocks(o, format_of(o.gt, format), format_of(o.est, format));
+  const Trajectory gt = read_trajectory(o.gt, format, o.gt_times, o.rate);
+  const Trajectory est = read_trajectory(o.est, format, o.est_times, o.rate);
   spdlog::debug("read {} ground-truth and {} estimated poses", gt.size(), est.size());
   const TrajectoryEvaluation e = evaluate_trajectory(gt, est, options);
-  print_table(o, e);
+  const KittiRelativeError k = kitti_relative_error_after_alignment(gt, est, e);
+  print_table(o, e, k);
 
   if (!o.json.empty()) {
     Json report = to_json(e);
+    Json kitti = to_json(k);
+    kitti["estimate_aligned_with"] = o.align;
+    report["kitti_relative"] = kitti;
     report["alignment"] = o.align;
     report["max_dt"] = o.max_dt;
     report["rpe_delta"] = o.rpe_delta;
@@ -77,7 +120,8 @@ void add_evaluate_trajectory_command(CLI::App& evaluate) {
   using namespace trajectory_command;
   auto options = std::make_shared<Options>();
   auto* cmd = evaluate.add_subcommand(
-      "trajectory", "ATE and RPE of an estimated trajectory against ground truth (TUM or KITTI files)");
+      "trajectory",
+      "ATE, RPE and KITTI's relative errors of an estimated trajectory against ground truth (TUM or KITTI files)");
   cmd->add_option("--gt", options->gt, "Ground-truth trajectory file")->required();
   cmd->add_option("--est", options->est, "Estimated trajectory file")->required();
   cmd->add_option("--align", options->align, "Alignment before measuring: sim3 (monocular) or se3")
@@ -86,8 +130,12 @@ void add_evaluate_trajectory_command(CLI::App& evaluate) {
   cmd->add_option("--format", options->format, "File format of both files: auto (by column count), tum or kitti")
       ->check(CLI::IsMember({"auto", "tum", "kitti"}))
       ->capture_default_str();
-  cmd->add_option("--gt-times", options->gt_times, "Timestamps of a KITTI ground truth, one per line");
-  cmd->add_option("--est-times", options->est_times, "Timestamps of a KITTI estimate, one per line");
+  cmd->add_option("--gt-times", options->gt_times, "Timestamps of a KITTI ground truth, one per pose line");
+  cmd->add_option("--est-times", options->est_times, "Timestamps of a KITTI estimate, one per pose line");
+  cmd->add_option("--rate", options->rate,
+                  "Frames per second of the KITTI files without a times file: line i at i / HZ seconds (KITTI: 10)")
+      ->type_name("HZ")
+      ->check(CLI::Range(1e-6, 1e6));
   cmd->add_option("--max-dt", options->max_dt, "Largest time difference of an associated pose pair, seconds")
       ->check(CLI::Range(0.0, 3600.0))
       ->capture_default_str();

@@ -1,6 +1,7 @@
 #pragma once
-// `facadeslam evaluate trajectory`: ATE / RPE of an estimated trajectory
-// against ground truth, as a table, a JSON report and a top-view plot.
+// `facadeslam evaluate trajectory`: ATE / RPE and the KITTI benchmark's
+// relative errors of an estimated trajectory against ground truth, as a
+// table, a JSON report and a top-view plot.
 #include <CLI/CLI.hpp>
 
 namespace facadeslam::apps {

@@ -20,7 +20,7 @@
 #include "apps/replay/replay_render.hpp"
 #include "apps/replay/synth_manifest.hpp"
 #include "core/camera/camera_yaml.hpp"
-#include "core/trajectory/trajectory_io.hpp"
+#include "core/trajectory/sequence_ground_truth.hpp"
 #include "core/util/error.hpp"
 #include "core/util/path_checks.hpp"
 #include "core/util/interrupt.hpp"
@@ -109,8 +109,8 @@ int run_replay(ReplayOptions o) {
   const Camera camera = load_camera(o.camera);
   // The ground truth is read before any frame (a run of minutes must not
   // end in "no such file").
-  if (!o.gt.empty() && read_trajectory(o.gt).size() < 2)
-    fail_file(o.gt, "a ground-truth trajectory of at least 2 poses");
+  std::optional<SequenceGroundTruth> ground_truth;
+  if (!o.gt.empty()) ground_truth.emplace(o.gt);
   if (!o.load_map.empty()) require_file(o.load_map, "a map file (.fslmap) written by replay --save-map");
   // The outputs go to a staging folder beside --out, moved into place at
   // the end (core/util/staged_folder.hpp): a failed or aborted run leaves
@@ -149,6 +149,10 @@ int run_replay(ReplayOptions o) {
   seq.on_corrupt = corrupt_policy_from_string(o.on_corrupt);
   auto source = open_sequence(o.sequence, seq);
   check_synth_manifest(o.sequence);
+  // A KITTI ground truth needs a line for the last selected frame (a video's
+  // frame count is the container's guess: checked frame by frame only).
+  if (ground_truth && source->size_hint() > 0 && detect_sequence_kind(o.sequence) != SequenceKind::video)
+    ground_truth->require_frames_up_to(o.start + (source->size_hint() / o.loop - 1) * o.stride);
   spdlog::info("replaying {} with camera {} ({})", source->description(), o.camera.string(),
                o.sync ? "synchronous" : "threaded");
 
@@ -181,6 +185,9 @@ int run_replay(ReplayOptions o) {
                                    " but the camera (" + o.camera.string() + ") is " + std::to_string(camera.width()) +
                                    "x" + std::to_string(camera.height()));
     if (gt_labels) gt_labels->add(*frame);
+    // Pass 0's frames only: the later passes' ground truth is pass 0's, repeated.
+    if (ground_truth && source->stats().pass_time_offsets_s.size() <= 1)
+      ground_truth->add_frame(frame->index, frame->timestamp);
     // The renderer gets its own copy of the image and reads the map only
     // between frames: the System's work is the same with or without it.
     const std::size_t frame_number = log.frames;
@@ -203,12 +210,13 @@ int run_replay(ReplayOptions o) {
   ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(),
                      slam.semantics.enabled ? slam.semantics.grey_model : fs::path(), {}, {}};
   info.interrupted = interrupted;
+  if (ground_truth) info.ground_truth = ground_truth->trajectory();
   if (ar_render) info.render = ar_render->finish(replay_fps);
   if (gt_labels && slam.semantics.enabled)
     info.label_accuracy =
         semantics::map_label_accuracy(system.map(), [&](std::size_t index) { return gt_labels->class_ids(index); });
   const ReplayOutputs outputs =
-      write_replay_outputs({staged.path(), o.save_map.empty() ? staged.path() / "map.fslmap" : staged.staged(o.save_map), o.gt},
+      write_replay_outputs({staged.path(), o.save_map.empty() ? staged.path() / "map.fslmap" : staged.staged(o.save_map)},
                            info, log, system, source->stats());
   staged.commit();
   std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalised, %zu map resets, %zu keyframes, "
@@ -259,7 +267,9 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--camera", options->camera, "Camera YAML (default: camera.yaml beside the sequence)");
   cmd->add_option("--config", options->config, "SLAM settings YAML (see configs/slam.yaml)");
   cmd->add_option("--out", options->out, "Output folder (default: ./facadeslam-out)");
-  cmd->add_option("--gt", options->gt, "Ground-truth TUM trajectory: adds ATE to the report");
+  cmd->add_option("--gt", options->gt,
+                  "Ground-truth trajectory, TUM or KITTI (line i: frame i's pose): adds ATE and KITTI's relative "
+                  "errors to the report");
   cmd->add_option("--gt-labels", options->gt_labels,
                   "Folder of ground-truth label PNGs named like the frames: adds label accuracy to the report "
                   "(default: label/ beside a synthetic sequence)");

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include <spdlog/spdlog.h>
 
 #include "core/map/map_io.hpp"
 #include "core/map/point_cloud_writer.hpp"
 #include "core/map/semantic_classes.hpp"
+#include "core/trajectory/kitti_relative_error.hpp"
 #include "core/trajectory/metrics.hpp"
 #include "core/trajectory/top_view.hpp"
 #include "core/trajectory/trajectory_io.hpp"
@@ -88,22 +90,24 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
 
 // The ATE figures of `estimate` into `out` (ate_rmse_m, path_length_m,
 // ate_percent_of_path, ate_pairs, sim3_scale), the top view into `plot`
-// unless it is empty. A few poses on a line (a short stretch of straight
-// driving) leave the alignment undetermined: `ate_error` then, and the
-// run's outputs still stand.
-void add_ate_figures(Json& out, const Trajectory& gt, const Trajectory& estimate, const std::string& file,
-                     const std::filesystem::path& plot) {
+// unless it is empty; the evaluation, for further figures. A few poses on a
+// line (a short stretch of straight driving) leave the alignment
+// undetermined: `ate_error` then, and the run's outputs still stand.
+std::optional<TrajectoryEvaluation> add_ate_figures(Json& out, const Trajectory& gt, const Trajectory& estimate,
+                                                    const std::string& file, const std::filesystem::path& plot) {
   try {
-    const TrajectoryEvaluation e = evaluate_trajectory(gt, estimate, {});
+    TrajectoryEvaluation e = evaluate_trajectory(gt, estimate, {});
     out["ate_rmse_m"] = e.ate_rmse_m;
     out["path_length_m"] = e.path_length_m;
     out["ate_percent_of_path"] = e.ate_percent_of_path;
     out["ate_pairs"] = e.pairs;
     out["sim3_scale"] = e.scale;
     if (!plot.empty()) save_top_view_png(plot, gt, e);
+    return e;
   } catch (const Error& e) {
     spdlog::warn("no ATE for {}: {}", file, e.what());
     out["ate_error"] = std::string(e.what());
+    return std::nullopt;
   }
 }
 
@@ -196,12 +200,17 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["mapping"] = mapping_summary(stats);
   report["semantics"] = semantics_summary(info, log, system);
   if (info.render) report["render"] = *info.render;
-  if (!paths.gt.empty() && trajectory.size() >= 3) {
+  if (!info.ground_truth.empty() && trajectory.size() >= 3) {
     // trajectory.txt's figures at the top level (the names report.json has
     // always had), the online trajectory's under the same names in ate_online.
     // A looped replay's ground truth repeats with the frames (looping_source.hpp).
-    const Trajectory gt = repeat_trajectory(read_trajectory(paths.gt), read_stats.pass_time_offsets_s);
-    add_ate_figures(report, gt, trajectory, "trajectory.txt", paths.out / "trajectory.png");
+    const Trajectory gt = repeat_trajectory(info.ground_truth, read_stats.pass_time_offsets_s);
+    if (const auto e = add_ate_figures(report, gt, trajectory, "trajectory.txt", paths.out / "trajectory.png")) {
+      // On the Sim(3)-aligned trajectory.txt, as the ATE; "no_segments" below 100 m of path.
+      Json kitti = to_json(kitti_relative_error_after_alignment(gt, trajectory, *e));
+      kitti["estimate_aligned_with"] = "sim3";
+      report["kitti_relative"] = kitti;
+    }
     Json ate_online = Json::object();
     add_ate_figures(ate_online, gt, online, "trajectory_online.txt", {});
     report["ate_online"] = ate_online;

@@ -10,6 +10,7 @@
 
 #include "apps/replay/replay_log.hpp"
 #include "core/camera/camera.hpp"
+#include "core/trajectory/trajectory.hpp"
 #include "core/util/json.hpp"
 #include "semantics/evaluation/map_label_accuracy.hpp"
 #include "sequences/frame_source.hpp"
@@ -20,7 +21,6 @@ namespace facadeslam::apps {
 struct ReplayOutputPaths {
   std::filesystem::path out;        // output folder
   std::filesystem::path map_file;   // where the map goes
-  std::filesystem::path gt;         // ground-truth TUM trajectory, or empty
 };
 
 struct ReplayRunInfo {
@@ -33,6 +33,8 @@ struct ReplayRunInfo {
   // With --render: what was rendered (apps/replay/replay_render.hpp).
   std::optional<Json> render;
   bool interrupted = false;  // stopped early by Ctrl-C / SIGTERM: the outputs cover the frames before
+  // replay --gt (core/trajectory/sequence_ground_truth.hpp), of one pass; empty without.
+  Trajectory ground_truth{};
 };
 
 struct ReplayOutputs {

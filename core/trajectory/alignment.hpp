@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace facadeslam {
 
@@ -17,6 +18,15 @@ struct Sim3Alignment {
 
   // s R p + t
   Eigen::Vector3d apply(const Eigen::Vector3d& p) const { return scale * (R * p) + t; }
+  // A camera pose moved with its position: rotation R R_w_c, position
+  // s R p + t. The camera's own axes are not scaled, so the result stays a
+  // rigid pose (the scale shows in the distances between poses).
+  Eigen::Isometry3d apply_to_pose(const Eigen::Isometry3d& T_w_c) const {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = R * T_w_c.linear();
+    T.translation() = apply(T_w_c.translation());
+    return T;
+  }
 };
 
 // Aligns `source` onto `target` (same length, corresponding by index), so that

@@ -20,20 +20,12 @@ double rms(const std::vector<double>& values) {
   return std::sqrt(sum / static_cast<double>(values.size()));
 }
 
-// The aligned estimate pose: rotation R * R_est, position s R p_est + t.
-Eigen::Isometry3d aligned_pose(const Sim3Alignment& a, const Eigen::Isometry3d& T_w_c) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = a.R * T_w_c.linear();
-  T.translation() = a.apply(T_w_c.translation());
-  return T;
-}
+}  // namespace
 
 double rotation_angle_deg(const Eigen::Matrix3d& R) {
   // Through the quaternion: acos of the trace loses precision at small angles.
   return rad_to_deg(Eigen::AngleAxisd(Eigen::Quaterniond(R).normalized()).angle());
 }
-
-}  // namespace
 
 AlignmentMode parse_alignment_mode(const std::string& name) {
   if (name == "sim3") return AlignmentMode::sim3;
@@ -74,6 +66,7 @@ TrajectoryEvaluation evaluate_trajectory(const Trajectory& gt, const Trajectory&
 
   TrajectoryEvaluation result;
   result.pairs = pairs.size();
+  result.associated = pairs;
 
   std::vector<Eigen::Vector3d> est_positions;
   est_positions.reserve(pairs.size());
@@ -104,8 +97,8 @@ TrajectoryEvaluation evaluate_trajectory(const Trajectory& gt, const Trajectory&
   for (std::size_t i = 0; i + options.rpe_delta < pairs.size(); ++i) {
     const std::size_t j = i + options.rpe_delta;
     const Eigen::Isometry3d gt_motion = gt[pairs[i].gt_index].T_w_c.inverse() * gt[pairs[j].gt_index].T_w_c;
-    const Eigen::Isometry3d est_motion = aligned_pose(result.alignment, est[pairs[i].est_index].T_w_c).inverse() *
-                                         aligned_pose(result.alignment, est[pairs[j].est_index].T_w_c);
+    const Eigen::Isometry3d est_motion = result.alignment.apply_to_pose(est[pairs[i].est_index].T_w_c).inverse() *
+                                         result.alignment.apply_to_pose(est[pairs[j].est_index].T_w_c);
     const Eigen::Isometry3d error = gt_motion.inverse() * est_motion;
     trans_errors.push_back(error.translation().norm());
     rot_errors.push_back(rotation_angle_deg(error.linear()));

@@ -40,6 +40,9 @@ struct ErrorStatistics {
 // Of a non-empty list of non-negative errors (throws Error if empty).
 ErrorStatistics error_statistics(std::vector<double> errors);
 
+// The angle of the rotation R, degrees in [0, 180].
+double rotation_angle_deg(const Eigen::Matrix3d& R);
+
 struct TrajectoryEvaluation {
   std::size_t pairs = 0;  // associated pose pairs
   double scale = 1.0;     // Sim(3) scale (1 for SE(3))
@@ -53,9 +56,11 @@ struct TrajectoryEvaluation {
   double ate_percent_of_path = 0.0;  // 100 * ate_rmse_m / path_length_m
 
   // For plots and further analysis: the alignment (gt ≈ s R est + t) and,
-  // per associated pair in estimate-time order, the estimate's timestamp, the
-  // ground-truth position and the aligned estimate position.
+  // per associated pair in estimate-time order, the pose indices, the
+  // estimate's timestamp, the ground-truth position and the aligned estimate
+  // position.
   Sim3Alignment alignment;
+  std::vector<AssociatedPair> associated;
   std::vector<double> timestamps;
   std::vector<Eigen::Vector3d> gt_positions;
   std::vector<Eigen::Vector3d> aligned_est_positions;

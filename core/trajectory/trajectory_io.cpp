@@ -171,16 +171,34 @@ std::vector<double> read_times(const std::filesystem::path& times_path, std::siz
 }
 
 Trajectory read_kitti(const std::filesystem::path& path, const std::vector<WordLine>& lines,
-                      const std::filesystem::path& times_path) {
+                      const std::filesystem::path& times_path, double rate_hz) {
+  const double frame_interval = rate_hz > 0.0 ? 1.0 / rate_hz : 1.0;
   Trajectory trajectory;
   trajectory.reserve(lines.size());
   for (std::size_t i = 0; i < lines.size(); ++i)
-    trajectory.push_back({static_cast<double>(i), kitti_pose(path, lines[i])});
+    trajectory.push_back({static_cast<double>(i) * frame_interval, kitti_pose(path, lines[i])});
   if (!times_path.empty()) {
     const auto times = read_times(times_path, trajectory.size(), path);
     for (std::size_t i = 0; i < trajectory.size(); ++i) trajectory[i].timestamp = times[i];
   }
   return trajectory;
+}
+
+std::vector<WordLine> read_pose_lines(const std::filesystem::path& path) {
+  auto lines = read_word_lines(path, "a TUM or KITTI trajectory file");
+  if (lines.empty()) fail_file(path, "no poses (expected a TUM or KITTI trajectory file)");
+  return lines;
+}
+
+// By the first pose line; a later line with another column count is an
+// error of that line (parse_numbers).
+TrajectoryFormat format_of(const std::filesystem::path& path, const std::vector<WordLine>& lines) {
+  const auto columns = lines.front().words.size();
+  if (columns == 8) return TrajectoryFormat::tum;
+  if (columns == 12) return TrajectoryFormat::kitti;
+  fail_line(path, lines.front().line_number,
+            "cannot tell the trajectory format: expected 8 numbers per line (TUM) or 12 (KITTI), got " +
+                std::to_string(columns));
 }
 
 }  // namespace
@@ -202,29 +220,23 @@ std::string to_string(TrajectoryFormat format) {
 }
 
 Trajectory read_trajectory(const std::filesystem::path& path, TrajectoryFormat format,
-                           const std::filesystem::path& times_path) {
-  const auto lines = read_word_lines(path, "a TUM or KITTI trajectory file");
-  if (lines.empty()) fail_file(path, "no poses (expected a TUM or KITTI trajectory file)");
-
-  if (format == TrajectoryFormat::auto_detect) {
-    const auto columns = lines.front().words.size();
-    if (columns == 8) {
-      format = TrajectoryFormat::tum;
-    } else if (columns == 12) {
-      format = TrajectoryFormat::kitti;
-    } else {
-      fail_line(path, lines.front().line_number,
-                "cannot tell the trajectory format: expected 8 numbers per line (TUM) or 12 (KITTI), got " +
-                    std::to_string(columns));
-    }
-  }
+                           const std::filesystem::path& times_path, double rate_hz) {
+  if (!std::isfinite(rate_hz) || rate_hz < 0.0)
+    throw Error("frame rate of " + path.string() + ": expected a positive number of frames per second, got " +
+                std::to_string(rate_hz));
+  const auto lines = read_pose_lines(path);
+  if (format == TrajectoryFormat::auto_detect) format = format_of(path, lines);
   if (format == TrajectoryFormat::tum) {
     if (!times_path.empty())
       fail_file(times_path, "a times file applies only to KITTI trajectories, and " + path.string() +
                                 " is in TUM format (its timestamps are in the first column)");
     return read_tum(path, lines);
   }
-  return read_kitti(path, lines, times_path);
+  return read_kitti(path, lines, times_path, rate_hz);
+}
+
+TrajectoryFormat detect_trajectory_format(const std::filesystem::path& path) {
+  return format_of(path, read_pose_lines(path));
 }
 
 void write_tum_trajectory(const std::filesystem::path& path, const Trajectory& trajectory) {

@@ -74,6 +74,31 @@ TEST(TrajectoryIo, KittiUsesLineIndexOrTimesFile) {
   EXPECT_EQ(timed[1].timestamp, 1.037359e-01);
 }
 
+TEST(TrajectoryIo, KittiWithoutTimesFileTakesARate) {
+  test::TempDir dir;
+  test::write_text(dir / "k.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 1 0 1 0 0 0 0 1 0\n1 0 0 2 0 1 0 0 0 0 1 0\n");
+  const auto at_10_hz = read_trajectory(dir / "k.txt", TrajectoryFormat::auto_detect, {}, 10.0);
+  ASSERT_EQ(at_10_hz.size(), 3u);
+  EXPECT_DOUBLE_EQ(at_10_hz[1].timestamp, 0.1);
+  EXPECT_DOUBLE_EQ(at_10_hz[2].timestamp, 0.2);
+  // A times file wins over the rate.
+  test::write_text(dir / "times.txt", "5.0\n5.5\n6.0\n");
+  EXPECT_EQ(read_trajectory(dir / "k.txt", TrajectoryFormat::kitti, dir / "times.txt", 10.0)[2].timestamp, 6.0);
+  EXPECT_THAT(error_of([&] { read_trajectory(dir / "k.txt", TrajectoryFormat::kitti, {}, -10.0); }),
+              HasSubstr("expected a positive number of frames per second"));
+}
+
+TEST(TrajectoryIo, DetectsTheFormatByTheColumnCount) {
+  test::TempDir dir;
+  test::write_text(dir / "k.txt", "# KITTI\n1 0 0 0 0 1 0 0 0 0 1 0\n");
+  test::write_text(dir / "t.txt", "0.5 0 0 0 0 0 0 1\n");
+  test::write_text(dir / "x.txt", "\n1 2 3\n");
+  EXPECT_EQ(detect_trajectory_format(dir / "k.txt"), TrajectoryFormat::kitti);
+  EXPECT_EQ(detect_trajectory_format(dir / "t.txt"), TrajectoryFormat::tum);
+  EXPECT_THAT(error_of([&] { detect_trajectory_format(dir / "x.txt"); }),
+              StartsWith((dir / "x.txt").string() + ":2: cannot tell the trajectory format"));
+}
+
 TEST(TrajectoryIo, KittiRotationsAreSnappedToOrthonormal) {
   test::TempDir dir;
   // 7 significant digits, as KITTI files print them.
