@@ -17,6 +17,7 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
     fast->finish();
   }
   t.coarse_stage = c.get_bool("coarse_stage", t.coarse_stage);
+  t.retry_from_prediction = c.get_bool("retry_from_prediction", t.retry_from_prediction);
   t.coarse_max_points = c.get_int("coarse_max_points", Range::closed(0, 1000), t.coarse_max_points);
   t.coarse_radius = c.get_double("coarse_radius_px", Range::positive(500), t.coarse_radius);
   t.fine_max_points = c.get_int("fine_max_points", Range::closed(10, 100000), t.fine_max_points);

@@ -358,7 +358,7 @@ TrackingResult Tracker::track(const Frame& frame) {
   // prediction that was right to 0.2, and every fine search failing from
   // there): when the fine stage fails from the coarse pose, it is tried
   // again from the prediction, and the better of the two is kept.
-  if (result.coarse_pose_used && (result.quality == TrackingQuality::bad ||
+  if (options_.retry_from_prediction && result.coarse_pose_used && (result.quality == TrackingQuality::bad ||
                                   result.inlier_rms_px > options_.max_good_rms_px)) {
     TrackingResult from_prediction;
     auto inliers_from_prediction = track_from(predicted, frame, from_prediction, false);

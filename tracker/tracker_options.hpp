@@ -33,6 +33,9 @@ struct TrackerOptions {
   int coarse_max_points = 60;
   int coarse_min_found = 10;      // below this the coarse pose is not used
   double coarse_radius = 30.0;
+  // When the fine stage fails from the coarse stage's pose, run it again
+  // from the motion model's prediction and keep the better (Tracker::track).
+  bool retry_from_prediction = true;
   // Fine stage: up to this many points over all levels, tight radius.
   int fine_max_points = 1000;
   double fine_radius = 8.0;       // without a coarse stage

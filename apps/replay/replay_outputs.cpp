@@ -216,8 +216,9 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
     report["ate_online"] = ate_online;
   }
   if (!system.earlier_segments().empty()) {
-    const Trajectory gt = paths.gt.empty() ? Trajectory{}
-                                           : repeat_trajectory(read_trajectory(paths.gt), read_stats.pass_time_offsets_s);
+    const Trajectory gt = info.ground_truth.empty()
+                              ? Trajectory{}
+                              : repeat_trajectory(info.ground_truth, read_stats.pass_time_offsets_s);
     report["trajectory_segments"] = write_trajectory_segments(paths.out / "segments", system, gt);
   }
   write_json(paths.out / "report.json", report);

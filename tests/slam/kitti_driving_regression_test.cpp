@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "core/camera/camera_yaml.hpp"
+#include "core/trajectory/kitti_relative_error.hpp"
 #include "core/trajectory/metrics.hpp"
 #include "core/trajectory/trajectory_io.hpp"
 #include "sequences/open_sequence.hpp"
@@ -29,6 +30,7 @@ namespace fs = std::filesystem;
 struct DrivingRun {
   std::size_t frames = 0, after_initialisation = 0, tracked = 0, relocalised = 0, resets = 0;
   TrajectoryEvaluation ate;
+  KittiRelativeError relative;  // KITTI's devkit figures, after the ATE's Sim(3) alignment
 };
 
 DrivingRun drive(const fs::path& dir, SlamOptions options) {
@@ -47,7 +49,9 @@ DrivingRun drive(const fs::path& dir, SlamOptions options) {
     run.relocalised += f.status == FrameStatus::relocalised;
   }
   run.resets = system.map_resets();
-  run.ate = evaluate_trajectory(read_trajectory(dir / "groundtruth.txt"), system.final_trajectory(), {});
+  const Trajectory gt = read_trajectory(dir / "groundtruth.txt"), estimate = system.final_trajectory();
+  run.ate = evaluate_trajectory(gt, estimate, {});
+  run.relative = kitti_relative_error_after_alignment(gt, estimate, run.ate);
   return run;
 }
 
@@ -59,10 +63,15 @@ void expect_driven(const std::string& name, const DrivingRun& run) {
               "%zu map resets, ATE (Sim3) %.3f m = %.3f %% of the %.1f m path over %zu poses\n",
               name.c_str(), run.frames, run.after_initialisation, run.tracked, 100.0 * share, run.relocalised,
               run.resets, run.ate.ate_rmse_m, run.ate.ate_percent_of_path, run.ate.path_length_m, run.ate.pairs);
+  for (const KittiLengthError& e : run.relative.per_length)
+    std::printf("[  FIGURES ] %s: KITTI relative error over %.0f m (%zu segments): %.2f %%, %.3f deg/100 m\n",
+                name.c_str(), e.length_m, e.pairs, e.translation_percent, e.rotation_deg_per_100m);
   EXPECT_GE(share, 0.98) << name;
   EXPECT_EQ(run.resets, 0u) << name;
   EXPECT_GE(static_cast<double>(run.ate.pairs), 0.95 * static_cast<double>(run.frames)) << name;
   EXPECT_LE(run.ate.ate_percent_of_path, 1.5) << name;
+  ASSERT_FALSE(run.relative.per_length.empty()) << name << ": " << run.relative.no_segments_reason();
+  EXPECT_EQ(run.relative.per_length.front().length_m, 100.0);
 }
 
 TEST(KittiDrivingRegression, Kitti00ThroughTwoTurnsWithoutLabels) {
