@@ -8,6 +8,7 @@
 #include "core/camera/camera_yaml.hpp"
 #include "core/config/config_node.hpp"
 #include "core/util/error.hpp"
+#include "core/util/input_confinement.hpp"
 #include "core/util/path_checks.hpp"
 #include "sequences/synth/label_classes.hpp"
 
@@ -41,14 +42,32 @@ cv::Vec3d colour(const ConfigNode& node, const std::string& key, const cv::Vec3d
   return {v[0], v[1], v[2]};
 }
 
+// A scene's photos stay inside its `photos` folder (input_confinement.hpp):
+// a scene from elsewhere must not make synth read /etc/passwd or climb out
+// with ../../...
+constexpr const char* kOutsidePaths = "pass --allow-outside-paths to read it";
+
 // An existing file under `root`, named by `key` of `node`.
 fs::path existing_file(const ConfigNode& node, const std::string& key, const fs::path& root) {
   const std::string relative = node.get_string(key);
   const fs::path path = root / relative;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    node.fail(key, "an existing file (looked for " + path.string() + ")", relative);
+  if (!path_confined(path, root))
+    node.fail(key, std::string("a path inside the photos folder ") + root.string() + " (" + kOutsidePaths + ")",
+              relative);
+  if (!is_readable_file(path))
+    node.fail(key, "an existing file (looked for " + path.string() + ", which " + describe_path(path) + ")", relative);
   return path;
+}
+
+// The scene's camera and photos folder lead into the scene file's folder or
+// the folder the command runs in: the shipped scenes (configs/scenes/) name
+// configs/camera/ and data/ of the project they are run from.
+void require_scene_path_confined(const ConfigNode& node, const std::string& key, const fs::path& path,
+                                 const fs::path& scene_folder) {
+  if (path_confined(path, scene_folder.empty() ? fs::path(".") : scene_folder) || path_confined(path, "."))
+    return;
+  node.fail(key, std::string("a path inside the scene file's folder or the working folder (") + kOutsidePaths + ")",
+            node.get_string(key));
 }
 
 Photo load_photo(const ConfigNode& node, const fs::path& photo_root) {
@@ -260,10 +279,12 @@ SceneSpec load_scene(const fs::path& path) {
   const fs::path folder = path.parent_path();
 
   const std::string camera_file = root.get_string("camera");
+  require_scene_path_confined(root, "camera", folder / camera_file, folder);
   if (!is_existing_file(folder / camera_file))
     root.fail("camera", "an existing camera YAML file, relative to the scene file (looked for " +
                             (folder / camera_file).string() + ")");
   scene.camera = load_camera(folder / camera_file);
+  scene.camera_file = folder / camera_file;
   if (root.has("resolution")) {
     const auto r = root.get_doubles("resolution", 2, Range::closed(16, 8192));
     if (r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
@@ -276,6 +297,8 @@ SceneSpec load_scene(const fs::path& path) {
   scene.noise_sigma = root.get_double("noise", Range::closed(0, 100), 0.0);
   scene.anisotropy = root.get_double("anisotropy", Range::closed(1, 16), 1.0);
   const fs::path photo_root = folder / root.get_string("photos", ".");
+  if (root.has("photos")) require_scene_path_confined(root, "photos", photo_root, folder);
+  scene.photo_root = photo_root;
   std::error_code ec;
   if (!fs::is_directory(photo_root, ec))
     root.fail("photos", "an existing folder, relative to the scene file (looked for " + photo_root.string() + ")",
