@@ -22,7 +22,8 @@ fs::path find_ground_truth_labels(const fs::path& sequence, const fs::path& give
 GroundTruthLabelFiles::GroundTruthLabelFiles(fs::path folder) : folder_(std::move(folder)) {}
 
 void GroundTruthLabelFiles::add(const Frame& frame) {
-  if (frame.source.empty()) throw Error("ground-truth labels need frames read from image files");
+  if (frame.source.empty())
+    fail_file(folder_, "ground-truth labels need frames read from image files (a video's frames have no names)");
   const bool first = names_.empty();
   const std::string name = frame.source.filename().string();
   const auto [it, added] = name_ids_.emplace(name, static_cast<std::uint32_t>(names_.size()));
@@ -32,6 +33,15 @@ void GroundTruthLabelFiles::add(const Frame& frame) {
   if (first) {
     frame_size_ = frame.colour.size();
     class_ids(frame.index);
+  }
+}
+
+void GroundTruthLabelFiles::require_files_for(const std::vector<fs::path>& frame_files) const {
+  for (const fs::path& frame : frame_files) {
+    const fs::path label = folder_ / frame.filename();
+    if (!is_readable_file(label))
+      fail_file(label, "the ground-truth label image of frame " + frame.filename().string() + " " +
+                           describe_path(label) + " (--gt-labels: a label PNG named like each frame)");
   }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Paths named inside input files (an rgb.txt's images, a dataset's
-// train.txt/test.txt names, a scene file's photos and camera) stay inside
-// the folder the file belongs to, so that a file from elsewhere cannot make
+// train.txt/test.txt names, a scene file's photos) stay inside the folder
+// the file belongs to, so that a file from elsewhere cannot make
 // a command read /etc/passwd or climb out with ../../..: the user passes
 // --allow-outside-paths to read such paths on purpose. Paths are compared
 // resolved (symbolic links followed), so a link out of the folder counts as

@@ -1,6 +1,8 @@
 #include "sequences/synth/scene_loader.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
@@ -42,32 +44,37 @@ cv::Vec3d colour(const ConfigNode& node, const std::string& key, const cv::Vec3d
   return {v[0], v[1], v[2]};
 }
 
-// A scene's photos stay inside its `photos` folder (input_confinement.hpp):
-// a scene from elsewhere must not make synth read /etc/passwd or climb out
-// with ../../...
+// A scene's photos stay inside its `photos` folder and are image files
+// (input_confinement.hpp): a scene from elsewhere must not make synth open
+// /etc/passwd or climb out with ../../... The `photos` folder and the
+// `camera` file themselves are the scene's named resources and may lie
+// anywhere (the shipped street scenes take their photos from the shared
+// data beside the project), but the camera must be a YAML file.
 constexpr const char* kOutsidePaths = "pass --allow-outside-paths to read it";
 
-// An existing file under `root`, named by `key` of `node`.
+bool has_extension(const fs::path& path, std::initializer_list<const char*> extensions) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* e : extensions)
+    if (extension == e) return true;
+  return false;
+}
+
+// An existing image file under `root`, named by `key` of `node`.
 fs::path existing_file(const ConfigNode& node, const std::string& key, const fs::path& root) {
   const std::string relative = node.get_string(key);
   const fs::path path = root / relative;
   if (!path_confined(path, root))
     node.fail(key, std::string("a path inside the photos folder ") + root.string() + " (" + kOutsidePaths + ")",
               relative);
+  if (!paths_outside_inputs_allowed() &&
+      !has_extension(path, {".jpg", ".jpeg", ".png", ".bmp", ".tif", ".tiff", ".ppm", ".pgm"}))
+    node.fail(key, std::string("an image file (.jpg, .jpeg, .png, .bmp, .tif, .tiff, .ppm, .pgm; ") + kOutsidePaths +
+                       " anyway)",
+              relative);
   if (!is_readable_file(path))
     node.fail(key, "an existing file (looked for " + path.string() + ", which " + describe_path(path) + ")", relative);
   return path;
-}
-
-// The scene's camera and photos folder lead into the scene file's folder or
-// the folder the command runs in: the shipped scenes (configs/scenes/) name
-// configs/camera/ and data/ of the project they are run from.
-void require_scene_path_confined(const ConfigNode& node, const std::string& key, const fs::path& path,
-                                 const fs::path& scene_folder) {
-  if (path_confined(path, scene_folder.empty() ? fs::path(".") : scene_folder) || path_confined(path, "."))
-    return;
-  node.fail(key, std::string("a path inside the scene file's folder or the working folder (") + kOutsidePaths + ")",
-            node.get_string(key));
 }
 
 Photo load_photo(const ConfigNode& node, const fs::path& photo_root) {
@@ -279,7 +286,8 @@ SceneSpec load_scene(const fs::path& path) {
   const fs::path folder = path.parent_path();
 
   const std::string camera_file = root.get_string("camera");
-  require_scene_path_confined(root, "camera", folder / camera_file, folder);
+  if (!paths_outside_inputs_allowed() && !has_extension(camera_file, {".yaml", ".yml"}))
+    root.fail("camera", std::string("a camera YAML file (.yaml or .yml; ") + kOutsidePaths + " anyway)", camera_file);
   if (!is_existing_file(folder / camera_file))
     root.fail("camera", "an existing camera YAML file, relative to the scene file (looked for " +
                             (folder / camera_file).string() + ")");
@@ -297,7 +305,6 @@ SceneSpec load_scene(const fs::path& path) {
   scene.noise_sigma = root.get_double("noise", Range::closed(0, 100), 0.0);
   scene.anisotropy = root.get_double("anisotropy", Range::closed(1, 16), 1.0);
   const fs::path photo_root = folder / root.get_string("photos", ".");
-  if (root.has("photos")) require_scene_path_confined(root, "photos", photo_root, folder);
   scene.photo_root = photo_root;
   std::error_code ec;
   if (!fs::is_directory(photo_root, ec))
