@@ -21,6 +21,11 @@ void require_readable_file(const std::filesystem::path& path, const std::string&
   if (!is_readable_file(path)) fail_file(path, describe_path(path) + " (expected " + what + ")");
 }
 
+void require_readable_if_present(const std::filesystem::path& path, const std::string& what) {
+  if (path.empty() || !path_exists(path) || is_existing_folder(path) || is_readable_file(path)) return;
+  fail_file(path, describe_path(path) + " (expected " + what + ")");
+}
+
 CLI::Validator whole_number(long long min, long long max) {
   const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
   return CLI::Validator(

@@ -48,6 +48,12 @@ extern const CLI::Validator kNonEmptyPath;
 // A file that must exist and can be read (not a FIFO or device: said so).
 // For inputs named on the command line.
 void require_readable_file(const std::filesystem::path& path, const std::string& what);
+// An input file named on the command line, when something is there: a
+// regular file that can be read. A FIFO would block the reader forever, a
+// device never end: an Error saying what it is ("is a FIFO (named pipe)
+// (expected a camera YAML file)"). A missing path is left to the reader's
+// own message. Nothing for an empty path.
+void require_readable_if_present(const std::filesystem::path& path, const std::string& what);
 
 // "640x480" -> (640, 480), each side in [16, 8192]; an Error naming
 // `option` otherwise.

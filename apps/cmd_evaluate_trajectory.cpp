@@ -61,6 +61,10 @@ void run(const Options& o) {
   plan.output_file(o.json, "--json", trajectory_evaluation_kind());
   plan.output_file(o.plot, "--plot", png_picture_kind());
   plan.check();
+  require_readable_if_present(o.gt, "a trajectory file");
+  require_readable_if_present(o.est, "a trajectory file");
+  require_readable_if_present(o.gt_times, "a timestamps file");
+  require_readable_if_present(o.est_times, "a timestamps file");
   if (!o.json.empty()) require_writable_output(o.json);
   if (!o.plot.empty()) require_writable_output(o.plot);
   const InterruptGuard interrupts(InterruptResponse::end_at_once);

@@ -47,7 +47,7 @@ void GroundTruthLabelFiles::require_files_for(const std::vector<fs::path>& frame
 
 cv::Mat GroundTruthLabelFiles::class_ids(std::size_t frame_index) const {
   if (frame_index >= name_of_frame_.size() || name_of_frame_[frame_index] == 0)
-    throw Error("ground-truth labels: frame " + std::to_string(frame_index) + " was not read");
+    fail_file(folder_, "ground-truth labels: frame " + std::to_string(frame_index) + " was not read");
   const fs::path path = folder_ / names_[name_of_frame_[frame_index] - 1];
   const cv::Mat colours = semantics::read_label_image(path);
   if (colours.size() != frame_size_)

@@ -1,5 +1,6 @@
 #include "apps/replay/replay_paths.hpp"
 
+#include "apps/cli_support.hpp"
 #include "apps/output_kinds.hpp"
 #include "core/util/output_policy.hpp"
 #include "core/util/path_checks.hpp"
@@ -29,6 +30,14 @@ void check_replay_paths(const ReplayPaths& p) {
   plan.output_file(p.save_map, "--save-map", map_file_kind());
   plan.output_folder(p.render, "--render", render_folder_layout());
   plan.check();
+  // Inputs that are there but are no readable file (a FIFO would block).
+  require_readable_if_present(p.camera, "a camera YAML file");
+  require_readable_if_present(p.config, "a SLAM settings YAML file");
+  require_readable_if_present(p.gt, "a ground-truth TUM trajectory");
+  require_readable_if_present(p.load_map, "a map file (.fslmap)");
+  require_readable_if_present(p.model, "a forest model (.fsmodel)");
+  require_readable_if_present(p.grey_model, "a forest model (.fsmodel)");
+  require_readable_if_present(p.semantics_config, "a semantic settings YAML file");
 }
 
 }  // namespace facadeslam::apps

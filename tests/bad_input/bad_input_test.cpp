@@ -342,6 +342,13 @@ const Case kCases[] = {
      "...' (1048576 bytes) is not a timestamp"},
     {"rgb_txt_fifo_image", "replay {shared}/fifo_list/rgb.txt --camera {cam} --out {out}", 1,
      "fifo.png is a FIFO (named pipe)"},
+    // A FIFO named as an input is refused before it is opened (a reader
+    // would wait forever on it).
+    {"camera_is_a_fifo", "replay {seq} --camera {shared}/fifo_list/fifo.png --out {out}", 1,
+     "fifo.png: is a FIFO (named pipe) (expected a camera YAML file)"},
+    {"trajectory_gt_is_a_fifo",
+     "evaluate trajectory --gt {shared}/fifo_list/fifo.png --est {corpus}/trajectory/good.txt", 1,
+     "fifo.png: is a FIFO (named pipe) (expected a trajectory file)"},
     // Inputs confined to their folder (point 4).
     {"rgb_txt_outside_absolute", "replay {corpus}/rgb_txt/outside_absolute.txt --camera {cam} --out {out}", 1,
      "line 1: '/etc/passwd' leads outside"},
