@@ -159,9 +159,14 @@ void run(Options& o) {
     results.push_back(semantics::evaluate_labels(o.evaluation));
     print_summary(results.back());
     if (several) reports.push_back(semantics::to_json(results.back(), o.evaluation));
-    if (!o.confusion.empty()) save_confusion(confusion_path(o, name, several), results.back());
   }
   if (several) std::printf("\n%s", semantics::comparison_table(results).c_str());
+  // The outputs together at the end: a signal while they are written waits
+  // for them, one before leaves the earlier ones as they were.
+  const AbortDeferral all_outputs;
+  if (!o.confusion.empty())
+    for (std::size_t i = 0; i < descriptors.size(); ++i)
+      save_confusion(confusion_path(o, descriptors[i], several), results[i]);
   if (!o.json.empty()) {
     Json report = several ? Json::object() : semantics::to_json(results.front(), o.evaluation);
     if (several) {
