@@ -20,25 +20,31 @@ namespace {
 
 // "unknown command 'foo' (expected one of: replay, evaluate, ...)" when the
 // first word after the global flags names no subcommand (of `evaluate`, for
-// the word after it); empty otherwise. CLI11 alone says "A subcommand is
-// required", which does not name the word that was wrong.
-std::string unknown_subcommand(CLI::App& app, int argc, char** argv) {
+// the word after it), "missing command (expected one of: ...)" when there is
+// none; empty otherwise (and with --help). CLI11 alone says "A subcommand is
+// required", which names neither the word that was wrong nor the choices.
+std::string subcommand_problem(CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "-h" || std::string(argv[i]) == "--help") return {};
   CLI::App* level = &app;
   std::string command = "command";
+  const auto choices = [](CLI::App* at, std::string& names) {
+    std::vector<CLI::App*> subcommands = at->get_subcommands([](CLI::App* sub) { return !sub->get_name().empty(); });
+    for (CLI::App* sub : subcommands) names.append(names.empty() ? "" : ", ").append(sub->get_name());
+    return subcommands;
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string word = argv[i];
     if (word.empty() || word[0] == '-') {
       if (level != &app) return {};  // a subcommand's own options: CLI11 checks them
       continue;
     }
-    std::vector<CLI::App*> subcommands = level->get_subcommands([](CLI::App* sub) { return !sub->get_name().empty(); });
+    std::string names;
+    const std::vector<CLI::App*> subcommands = choices(level, names);
     if (subcommands.empty()) return {};
     CLI::App* found = nullptr;
-    std::string names;
-    for (CLI::App* sub : subcommands) {
+    for (CLI::App* sub : subcommands)
       if (sub->check_name(word)) found = sub;
-      names.append(names.empty() ? "" : ", ").append(sub->get_name());
-    }
     if (!found) {
       std::string message = "unknown " + command + " " + facadeslam::quoted_for_message(word);
       return message.append(" (expected one of: ").append(names).append(")");
@@ -46,7 +52,9 @@ std::string unknown_subcommand(CLI::App& app, int argc, char** argv) {
     level = found;
     command = found->get_name() + " command";
   }
-  return {};
+  std::string names;
+  if (choices(level, names).empty()) return {};
+  return "missing " + command + " (expected one of: " + names + ")";
 }
 
 }  // namespace
@@ -76,7 +84,7 @@ int main(int argc, char** argv) {
   apps::add_optimise_command(app);
   apps::add_render_map_command(app);
 
-  if (const std::string unknown = unknown_subcommand(app, argc, argv); !unknown.empty()) {
+  if (const std::string unknown = subcommand_problem(app, argc, argv); !unknown.empty()) {
     std::fprintf(stderr, "facadeslam: %s (see --help)\n", one_line_message(unknown).c_str());
     return apps::kExitUsage;
   }

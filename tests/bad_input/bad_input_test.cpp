@@ -338,6 +338,8 @@ const Case kCases[] = {
      "unknown command 'frobnicate' (expected one of: replay, evaluate"},
     {"cli_unknown_evaluate_command", "evaluate trajectroy --gt {corpus}/trajectory/good.txt", 2,
      "unknown evaluate command 'trajectroy' (expected one of: trajectory, labels, invariance)"},
+    {"cli_missing_evaluate_command", "evaluate", 2,
+     "missing evaluate command (expected one of: trajectory, labels, invariance)"},
     {"rgb_txt_huge_line_is_not_echoed", "replay {shared}/huge_line.txt --camera {cam} --out {out}", 1,
      "...' (1048576 bytes) is not a timestamp"},
     {"rgb_txt_fifo_image", "replay {shared}/fifo_list/rgb.txt --camera {cam} --out {out}", 1,
