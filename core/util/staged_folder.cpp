@@ -6,6 +6,7 @@
 #include <string>
 #include <system_error>
 #include <vector>
+#include <fcntl.h>  // AT_FDCWD
 #include <unistd.h>
 
 #include "core/util/error.hpp"

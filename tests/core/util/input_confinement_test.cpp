@@ -11,6 +11,7 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using test::error_of;
 

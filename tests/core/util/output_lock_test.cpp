@@ -20,6 +20,7 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using test::error_of;
 

@@ -14,6 +14,7 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using test::error_of;
 
