@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "core/util/error.hpp"
+#include "core/util/path_checks.hpp"
 
 namespace facadeslam::apps {
 
@@ -14,6 +15,39 @@ void require_file(const std::filesystem::path& path, const std::string& what) {
   if (!std::filesystem::exists(path, ec)) fail_file(path, "no such file (expected " + what + ")");
   if (!std::filesystem::is_regular_file(path, ec)) fail_file(path, "not a regular file (expected " + what + ")");
 }
+
+void require_readable_file(const std::filesystem::path& path, const std::string& what) {
+  if (!path_exists(path)) fail_file(path, "no such file (expected " + what + ")");
+  if (!is_readable_file(path)) fail_file(path, describe_path(path) + " (expected " + what + ")");
+}
+
+void require_readable_if_present(const std::filesystem::path& path, const std::string& what) {
+  if (path.empty() || !path_exists(path) || is_existing_folder(path) || is_readable_file(path)) return;
+  fail_file(path, describe_path(path) + " (expected " + what + ")");
+}
+
+CLI::Validator whole_number(long long min, long long max) {
+  const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  return CLI::Validator(
+      [min, max, range](const std::string& text) -> std::string {
+        std::size_t start = text.size() > 1 && text[0] == '+' ? 1 : 0;
+        const bool negative = text.size() > 1 && text[0] == '-';
+        if (negative) start = 1;
+        const std::string digits = text.substr(start);
+        bool fits = !digits.empty() && digits.size() <= 18 && digits.find_first_not_of("0123456789") == std::string::npos;
+        if (fits) {
+          const long long value = negative ? -std::stoll(digits) : std::stoll(digits);
+          fits = value >= min && value <= max;
+        }
+        if (fits) return {};
+        return "expected a whole number in " + range + ", got " + quoted_for_message(text);
+      },
+      "INT in " + range, "whole number");
+}
+
+const CLI::Validator kNonEmptyPath(
+    [](const std::string& text) -> std::string { return text.empty() ? "expected a path, got ''" : std::string(); },
+    "PATH", "non-empty path");
 
 void require_writable_output(const std::filesystem::path& path) {
   std::error_code ec;
@@ -66,21 +100,6 @@ void require_creatable_folder(const std::filesystem::path& folder) {
   if (!std::filesystem::create_directory(probe, ec) || ec)
     fail_file(folder, "an output folder, but nothing can be made in " + existing.string());
   std::filesystem::remove(probe, ec);
-}
-
-void require_replaceable_folder(const std::filesystem::path& folder, const std::string& marker,
-                                const std::vector<std::string>& outputs, const std::string& command) {
-  std::error_code ec;
-  if (!std::filesystem::exists(folder, ec)) return;
-  if (!std::filesystem::is_directory(folder, ec)) fail_file(folder, "an output folder, but it is a file");
-  if (std::filesystem::exists(folder / marker, ec)) return;
-  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.front() == '.' || std::find(outputs.begin(), outputs.end(), name) != outputs.end()) continue;
-    std::string what = "an output folder, which a run replaces as a whole, but it holds ";
-    what.append(quoted_for_message(name)).append(", not an earlier ").append(command);
-    fail_file(folder, what.append(" output (no ").append(marker).append("): give a new or empty folder"));
-  }
 }
 
 void fail_usage(const std::string& option, const std::string& message) {

@@ -29,17 +29,31 @@ void require_writable_output(const std::filesystem::path& path);
 // the rest at the end). An Error naming the folder otherwise.
 void require_creatable_folder(const std::filesystem::path& folder);
 
-// An output folder that a run replaces as a whole (core/util/staged_folder.hpp)
-// must not hold anything else: it is absent, empty, or an earlier run's
-// output folder (it holds `marker`, or only names from `outputs` and hidden
-// leftovers). An Error naming the folder and `command` otherwise, so that
-// `--out .` or `--out ~` never replaces a folder of other files.
-void require_replaceable_folder(const std::filesystem::path& folder, const std::string& marker,
-                                const std::vector<std::string>& outputs, const std::string& command);
-
 // A bad value on the command line: CLI::ValidationError "<option>: <message>",
 // which main() turns into exit code 2.
 [[noreturn]] void fail_usage(const std::string& option, const std::string& message);
+
+// Count, seed and size options: a whole number in [min, max], so that a
+// negative count is refused with the range rather than wrapping round to
+// 2^64 - 1 ("expected a whole number in [0, 4294967295], got '-1'").
+CLI::Validator whole_number(long long min, long long max);
+// The ranges of the count and seed options: a count of images, samples or
+// frames (0 often meaning all), and a seed (stored in reports, where JSON
+// numbers stay exact up to 2^53 - 1).
+inline constexpr long long kMaxCount = 1'000'000'000'000LL;
+inline constexpr long long kMaxSeed = 9'007'199'254'740'991LL;
+// A path option: not empty (`--out ''` is a slip, not "the default").
+extern const CLI::Validator kNonEmptyPath;
+
+// A file that must exist and can be read (not a FIFO or device: said so).
+// For inputs named on the command line.
+void require_readable_file(const std::filesystem::path& path, const std::string& what);
+// An input file named on the command line, when something is there: a
+// regular file that can be read. A FIFO would block the reader forever, a
+// device never end: an Error saying what it is ("is a FIFO (named pipe)
+// (expected a camera YAML file)"). A missing path is left to the reader's
+// own message. Nothing for an empty path.
+void require_readable_if_present(const std::filesystem::path& path, const std::string& what);
 
 // "640x480" -> (640, 480), each side in [16, 8192]; an Error naming
 // `option` otherwise.

@@ -12,10 +12,13 @@
 
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
+#include "apps/output_kinds.hpp"
 #include "calib/calibrate.hpp"
 #include "calib/calibration_report.hpp"
 #include "calib/residual_plot.hpp"
 #include "core/util/error.hpp"
+#include "core/util/interrupt.hpp"
+#include "core/util/output_policy.hpp"
 #include "core/util/json.hpp"
 
 namespace facadeslam::apps {
@@ -53,12 +56,25 @@ void run(const Options& o) {
 
   // Every output can be written before the images are read; the plot is
   // written before the camera file, so that a failed plot leaves no
-  // camera.yaml behind.
+  // camera.yaml behind. Each replaces only a file of its kind calibrate
+  // wrote, none lies among the images (it would be read as one next time).
+  if (o.out.extension() != ".yaml")
+    fail_file(o.out, "--out: expected a camera file name ending in .yaml (the plot goes beside it as "
+                     "NAME_coverage.png)");
   const std::filesystem::path plot = o.plot.empty() ? default_plot_path(o.out) : o.plot;
+  OutputPlan plan;
+  plan.input_folder_read_whole(o.images, "--images");
+  plan.output_file(o.out, "--out", calibrated_camera_kind());
+  plan.output_file(plot, o.plot.empty() ? "the coverage plot (beside --out)" : "--plot", png_picture_kind());
+  plan.output_file(o.json, "--json", calibration_report_kind());
+  plan.check();
   require_writable_output(o.out);
   require_writable_output(plot);
   if (!o.json.empty()) require_writable_output(o.json);
 
+  // Ctrl-C, SIGTERM, SIGHUP end the run at once: nothing is written before
+  // the end, and a file being written is removed (core/util/interrupt.hpp).
+  const InterruptGuard interrupts(InterruptResponse::end_at_once);
   const calib::CalibrationRun run = calib::run_calibration(request);
   std::fputs(calib::format_report(run).c_str(), stdout);
   std::fflush(stdout);
@@ -112,7 +128,11 @@ void add_calibrate_command(CLI::App& app) {
                   "Folder of chessboard images (.png/.jpg/.jpeg/.bmp, same size; at least " +
                       std::to_string(calib::kMinimumViews) + " usable, 10-20 varied views recommended)")
       ->required();
-  cmd->add_option("--out", options->out, "Camera YAML to write (the format of configs/camera/*.yaml)")->required();
+  cmd->add_option("--out", options->out,
+                  "Camera YAML to write, NAME.yaml (the format of configs/camera/*.yaml); replaces only a camera file "
+                  "calibrate wrote")
+      ->required()
+      ->check(kNonEmptyPath);
   cmd->add_option("--board", options->board, "Inner corners per row x per column, WxH (a 10 x 7 squares board is 9x6)")
       ->check(CLI::Validator(check_board_size, "WxH", "board size"))
       ->capture_default_str();
@@ -133,8 +153,9 @@ void add_calibrate_command(CLI::App& app) {
                   "Reject a view whose corners lie within this fraction of the image diagonal of an accepted view's")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd->add_option("--plot", options->plot, "Coverage/residual PNG to write (default: <out>_coverage.png beside --out)");
-  cmd->add_option("--json", options->json, "Write the full report to this JSON file");
+  cmd->add_option("--plot", options->plot, "Coverage/residual PNG to write (default: <out>_coverage.png beside --out)")
+      ->check(kNonEmptyPath);
+  cmd->add_option("--json", options->json, "Write the full report to this JSON file")->check(kNonEmptyPath);
   cmd->callback([options] { run(*options); });
 }
 

@@ -13,7 +13,11 @@
 #include "apps/cli_support.hpp"
 #include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
+#include "apps/output_kinds.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/json.hpp"
+#include "core/util/output_policy.hpp"
+#include "core/util/path_checks.hpp"
 #include "semantics/invariance/image_list.hpp"
 #include "semantics/invariance/invariance_plot.hpp"
 #include "semantics/invariance/invariance_report.hpp"
@@ -99,10 +103,29 @@ void run(const Options& o) {
   std::string plot_extension = o.plot.extension().string();
   for (char& c : plot_extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (!o.plot.empty() && plot_extension != ".png") fail_file(o.plot, "expected a file name ending in .png for the plot");
-  // Every output location, before the long run.
+  // Every output location, before the long run: each replaces only a file
+  // of its kind this program wrote and none is an input (output_policy.hpp).
+  OutputPlan plan;
+  for (const std::string& input : o.images) {
+    if (is_existing_folder(input))
+      plan.input_folder_read_whole(input, "--images");
+    else
+      plan.input(input, "--images");
+  }
+  if (is_existing_file(o.genome)) plan.input(o.genome, "--genome");
+  plan.output_file(o.json, "--json", invariance_report_kind());
+  plan.output_file(o.plot, "--plot", png_picture_kind());
+  if (!o.plot_dir.empty())
+    for (const semantics::InvarianceCaseRun& run : options.cases)
+      plan.output_file(o.plot_dir / ("invariance-" + std::string(semantics::case_info(run.id).name) + ".png"),
+                       "--plot-dir", png_picture_kind());
+  plan.check();
   if (!o.plot.empty()) require_writable_output(o.plot);
   if (!o.json.empty()) require_writable_output(o.json);
   if (!o.plot_dir.empty()) require_creatable_folder(o.plot_dir);
+  // Nothing is written before the end: Ctrl-C, SIGTERM and SIGHUP end the
+  // run at once (a file being written is removed: core/util/interrupt.hpp).
+  const InterruptGuard interrupts(InterruptResponse::end_at_once);
 
   std::vector<std::unique_ptr<semantics::PointDescriptor>> owned;
   for (const std::string& name : semantics::expand_descriptor_names(o.descriptors)) {
@@ -148,7 +171,9 @@ void add_evaluate_invariance_command(CLI::App& evaluate) {
                   "Image files, folders of images, or .txt lists (one image per line; LabelMeFacade names are looked "
                   "up as images/NAME.jpg beside the list)")
       ->required();
-  cmd->add_option("--max-images", options->max_images, "Use only the first N images (0 = all)")->capture_default_str();
+  cmd->add_option("--max-images", options->max_images, "Use only the first N images (0 = all)")
+      ->check(whole_number(0, kMaxCount))
+      ->capture_default_str();
   std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames), std::end(semantics::kPointDescriptorNames));
   names.emplace_back("all");
   cmd->add_option("--descriptor", options->descriptors, "Descriptors to compare (comma-separated or repeated), or all")
@@ -158,9 +183,12 @@ void add_evaluate_invariance_command(CLI::App& evaluate) {
   cmd->add_option("--genome", options->genome,
                   "Modular-descriptor genome: a genome file (0/1 text or .json) or the 211-character 0/1 string "
                   "(default: the thesis' best genome); also sets the SIFT patch size");
-  cmd->add_option("--step", options->step, "Grid step of the reference keypoints in pixels")->capture_default_str();
+  cmd->add_option("--step", options->step, "Grid step of the reference keypoints in pixels")
+      ->check(whole_number(1, 10000))
+      ->capture_default_str();
   cmd->add_option("--margin", options->margin,
                   "Pixels around each keypoint that must show the image in both the original and the changed copy")
+      ->check(whole_number(0, 10000))
       ->capture_default_str();
   std::string case_list;
   for (const auto& info : kInvarianceCases) case_list.append(case_list.empty() ? "" : ", ").append(info.name);
@@ -180,9 +208,11 @@ void add_evaluate_invariance_command(CLI::App& evaluate) {
     help.append("; negative values as --").append(info.name).append("=-10,0,10)");
     cmd->add_option(option_name(info.name), options->values[k], help)->delimiter(',');
   }
-  cmd->add_option("--json", options->json, "Write the report (every case's values and match rates) to this JSON file");
-  cmd->add_option("--plot", options->plot, "Write all cases as panels of one PNG");
-  cmd->add_option("--plot-dir", options->plot_dir, "Write one PNG per case, DIR/invariance-<case>.png");
+  cmd->add_option("--json", options->json, "Write the report (every case's values and match rates) to this JSON file")
+      ->check(kNonEmptyPath);
+  cmd->add_option("--plot", options->plot, "Write all cases as panels of one PNG")->check(kNonEmptyPath);
+  cmd->add_option("--plot-dir", options->plot_dir, "Write one PNG per case, DIR/invariance-<case>.png")
+      ->check(kNonEmptyPath);
   cmd->callback([options] { run(*options); });
 }
 

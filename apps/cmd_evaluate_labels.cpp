@@ -12,7 +12,11 @@
 #include "apps/cli_support.hpp"
 #include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
+#include "apps/output_kinds.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/json.hpp"
+#include "core/util/output_policy.hpp"
+#include "core/util/path_checks.hpp"
 #include "semantics/evaluation/confusion_plot.hpp"
 #include "semantics/evaluation/label_comparison.hpp"
 #include "semantics/evaluation/label_evaluation.hpp"
@@ -113,15 +117,34 @@ void run(Options& o) {
   // written when --confusion or --json would fail after it).
   if (!o.confusion.empty() && o.confusion.extension() != ".png")
     fail_file(o.confusion, "expected a file name ending in .png for the confusion matrix");
+  const std::vector<std::string> descriptors =
+      o.model.empty() ? semantics::expand_descriptor_names(o.descriptors) : std::vector<std::string>{};
+  const bool several = descriptors.size() > 1;
+  // Each output replaces only a file of its kind this program wrote, and
+  // none is an input (`--json DATASET/test.txt`): output_policy.hpp.
+  OutputPlan plan;
+  for (const char* list : {"train.txt", "test.txt"}) plan.input(o.evaluation.dataset / list, "--dataset's " + std::string(list));
+  plan.input_folder_read_whole(o.evaluation.dataset / "images", "--dataset's images/");
+  plan.input_folder_read_whole(o.evaluation.dataset / "labels", "--dataset's labels/");
+  plan.input(o.model, "--model");
+  if (is_existing_file(o.genome)) plan.input(o.genome, "--genome");
+  plan.output_file(o.json, "--json", label_evaluation_kind());
+  if (!o.confusion.empty() && o.model.empty())
+    for (const std::string& name : descriptors) plan.output_file(confusion_path(o, name, several), "--confusion", png_picture_kind());
+  else
+    plan.output_file(o.confusion, "--confusion", png_picture_kind());
+  plan.output_file(o.evaluation.model_out, "--model-out", model_out_kind());
+  plan.check();
   if (!o.json.empty()) require_writable_output(o.json);
+  // Nothing is written before the end: Ctrl-C, SIGTERM and SIGHUP end the
+  // run at once (a file being written is removed: core/util/interrupt.hpp).
+  const InterruptGuard interrupts(InterruptResponse::end_at_once);
   if (!o.model.empty()) {
     if (!o.confusion.empty()) require_writable_output(o.confusion);
     run_model(o);
     return;
   }
   o.evaluation.genome = resolve_genome(o.genome);
-  const std::vector<std::string> descriptors = semantics::expand_descriptor_names(o.descriptors);
-  const bool several = descriptors.size() > 1;
   if (!o.confusion.empty())
     for (const std::string& name : descriptors) require_writable_output(confusion_path(o, name, several));
   if (!o.evaluation.model_out.empty()) {
@@ -136,9 +159,14 @@ void run(Options& o) {
     results.push_back(semantics::evaluate_labels(o.evaluation));
     print_summary(results.back());
     if (several) reports.push_back(semantics::to_json(results.back(), o.evaluation));
-    if (!o.confusion.empty()) save_confusion(confusion_path(o, name, several), results.back());
   }
   if (several) std::printf("\n%s", semantics::comparison_table(results).c_str());
+  // The outputs together at the end: a signal while they are written waits
+  // for them, one before leaves the earlier ones as they were.
+  const AbortDeferral all_outputs;
+  if (!o.confusion.empty())
+    for (std::size_t i = 0; i < descriptors.size(); ++i)
+      save_confusion(confusion_path(o, descriptors[i], several), results[i]);
   if (!o.json.empty()) {
     Json report = several ? Json::object() : semantics::to_json(results.front(), o.evaluation);
     if (several) {
@@ -179,16 +207,22 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
                 "Class-balanced training sample: every class sampled to the median class size (rare classes "
                 "oversampled, common ones subsampled)");
   auto* max_train_option = cmd->add_option("--max-train", e.max_train_images, "Use only the first N images of train.txt (0 = all)")
+      ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
   cmd->add_option("--max-test", e.max_test_images, "Use only the first N images of test.txt (0 = all)")
+      ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
   auto* max_samples_option = cmd->add_option("--max-samples", e.max_samples, "At most N training keypoints, drawn at random (0 = all)")
+      ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
-  auto* seed_option = cmd->add_option("--seed", e.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
-  cmd->add_option("--json", options->json, "Write the report to this JSON file");
-  cmd->add_option("--confusion", options->confusion, "Write the confusion matrix to this PNG");
+  auto* seed_option = cmd->add_option("--seed", e.seed, "Seed of the training-sample draw and of the forest")
+      ->check(whole_number(0, kMaxSeed))
+      ->capture_default_str();
+  cmd->add_option("--json", options->json, "Write the report to this JSON file")->check(kNonEmptyPath);
+  cmd->add_option("--confusion", options->confusion, "Write the confusion matrix to this PNG")->check(kNonEmptyPath);
   auto* model_out_option =
-      cmd->add_option("--model-out", e.model_out, "Save the trained forest (model.fsmodel, or model.yml.gz for OpenCV's own format)");
+      cmd->add_option("--model-out", e.model_out, "Save the trained forest (model.fsmodel, or model.yml.gz for OpenCV's own format)")
+          ->check(kNonEmptyPath);
   // A model file fixes the descriptor, genome and forest: the training
   // options would be silently ignored, so they are refused.
   cmd->add_option("--model", options->model,

@@ -7,11 +7,15 @@
 
 #include <spdlog/spdlog.h>
 
+#include "apps/cli_support.hpp"
+#include "apps/output_kinds.hpp"
 #include "core/trajectory/kitti_relative_error.hpp"
 #include "core/trajectory/metrics.hpp"
 #include "core/trajectory/top_view.hpp"
 #include "core/trajectory/trajectory_io.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/json.hpp"
+#include "core/util/output_policy.hpp"
 
 namespace facadeslam::apps {
 // Named, so that a unity build can hold every command's Options and run().
@@ -86,6 +90,23 @@ void run(const Options& o) {
   options.max_dt = o.max_dt;
   options.rpe_delta = static_cast<std::size_t>(o.rpe_delta);
 
+  // The outputs replace only an earlier evaluation's files, never an input.
+  OutputPlan plan;
+  plan.input(o.gt, "--gt");
+  plan.input(o.est, "--est");
+  plan.input(o.gt_times, "--gt-times");
+  plan.input(o.est_times, "--est-times");
+  plan.output_file(o.json, "--json", trajectory_evaluation_kind());
+  plan.output_file(o.plot, "--plot", png_picture_kind());
+  plan.check();
+  require_readable_if_present(o.gt, "a trajectory file");
+  require_readable_if_present(o.est, "a trajectory file");
+  require_readable_if_present(o.gt_times, "a timestamps file");
+  require_readable_if_present(o.est_times, "a timestamps file");
+  if (!o.json.empty()) require_writable_output(o.json);
+  if (!o.plot.empty()) require_writable_output(o.plot);
+  const InterruptGuard interrupts(InterruptResponse::end_at_once);
+
   require_comparable_clocks(o, format_of(o.gt, format), format_of(o.est, format));
   const Trajectory gt = read_trajectory(o.gt, format, o.gt_times, o.rate);
   const Trajectory est = read_trajectory(o.est, format, o.est_times, o.rate);
@@ -142,8 +163,8 @@ void add_evaluate_trajectory_command(CLI::App& evaluate) {
   cmd->add_option("--rpe-delta", options->rpe_delta, "RPE over pose pairs this many associated poses apart")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
-  cmd->add_option("--json", options->json, "Write the figures to this JSON file");
-  cmd->add_option("--plot", options->plot, "Write a top view of both trajectories to this PNG");
+  cmd->add_option("--json", options->json, "Write the figures to this JSON file")->check(kNonEmptyPath);
+  cmd->add_option("--plot", options->plot, "Write a top view of both trajectories to this PNG")->check(kNonEmptyPath);
   cmd->add_option("--plane", options->plane,
                   "World plane of the top view: auto (the two axes the ground truth spreads along most), xy, xz or yz")
       ->check(CLI::IsMember({"auto", "xy", "xz", "yz"}))

@@ -16,9 +16,12 @@
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
 #include "apps/genome_option.hpp"
+#include "apps/output_kinds.hpp"
 #include "core/util/error.hpp"
 #include "core/util/path_checks.hpp"
 #include "core/util/interrupt.hpp"
+#include "core/util/output_policy.hpp"
+#include "core/util/staged_folder.hpp"
 #include "semantics/optimiser/ga_options.hpp"
 #include "semantics/optimiser/optimisation_run.hpp"
 #ifdef FACADESLAM_HAVE_MPI
@@ -42,7 +45,7 @@ void report(const Options& o, const semantics::OptimiseResult& r) {
   if (r.interrupted) {
     std::fprintf(stderr, "facadeslam: optimise interrupted after generation %d; --resume continues it\n",
                  r.generations - 1);
-    throw CLI::RuntimeError(kExitInterrupted);
+    throw CLI::RuntimeError(interrupt_exit_code());
   }
   std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n",
               r.generations, r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
@@ -59,13 +62,68 @@ void report(const Options& o, const semantics::OptimiseResult& r) {
   std::fflush(stdout);
 }
 
+// "DIR/.NAME.tmp-PID/..." in a message -> "DIR/NAME/...".
+std::string unstaged(std::string text, const std::filesystem::path& staging, const std::filesystem::path& out) {
+  const std::string from = staging.string(), to = out.string();
+  for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) text.replace(at, from.size(), to);
+  return text;
+}
+
+// The newest generation-NNN.json's number in `folder`, -1 without one.
+int newest_generation(const std::filesystem::path& folder) {
+  int newest = -1;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() < 19 || name.size() > 24 || name.compare(0, 11, "generation-") != 0 ||
+        name.compare(name.size() - 5, 5, ".json") != 0)
+      continue;
+    const std::string digits = name.substr(11, name.size() - 16);
+    if (digits.find_first_not_of("0123456789") == std::string::npos) newest = std::max(newest, std::stoi(digits));
+  }
+  return newest;
+}
+
+// A killed run's staging folder is further on than `than` (more generations).
+bool further_on(const std::filesystem::path& abandoned, const std::filesystem::path& than) {
+  return newest_generation(abandoned) > newest_generation(than);
+}
+
+// A run folder holding a run is continued only with --resume; --resume needs
+// one (in --out, or in the staging folder a killed run left beside it).
+void require_run_state(const std::filesystem::path& out, bool resume) {
+  const int newest = newest_generation(out);
+  if (!resume && newest >= 0)
+    throw Error(out.string() + ": holds a run already (generation " + std::to_string(newest) +
+                "); pass --resume to continue it, or choose another --out");
+}
+
+// The GA (the threaded run, or MPI's rank 0) writes into a staging folder
+// beside --out, moved into place when it ends or stops at Ctrl-C (its
+// checkpoints kept for --resume); a failed run leaves --out as it was.
+// --resume starts from --out's files, or from the staging folder a killed
+// run left when that one is further on.
+semantics::OptimiseResult run_staged(const Options& o, const semantics::EvaluateBatch& evaluate_batch = {}) {
+  StagedFolder staged(o.run.out, {o.run.resume, further_on});
+  semantics::OptimiseOptions run = o.run;
+  run.out = staged.path();
+  try {
+    const semantics::OptimiseResult result = semantics::run_optimisation(run, evaluate_batch);
+    staged.commit();
+    return result;
+  } catch (const Error& e) {
+    // Messages name --out, not the hidden staging folder.
+    throw Error(unstaged(e.what(), staged.path(), o.run.out));
+  }
+}
+
 #ifdef FACADESLAM_HAVE_MPI
 // Under mpirun: rank 0 runs the GA and the ranks above it evaluate. A rank
 // that fails ends them all (the others would wait for it forever).
 // Returns rank 0's result (reported once MPI is finalised); nothing on the other ranks.
 std::optional<semantics::OptimiseResult> run_under_mpi(const Options& o) {
   semantics::MpiSession mpi;
-  if (mpi.size() == 1) return semantics::run_optimisation(o.run);
+  if (mpi.size() == 1) return run_staged(o);
   try {
     if (mpi.rank() > 0) {
       const semantics::FitnessEvaluator evaluator(semantics::split_train_list(o.run.dataset, o.run.ga, o.run.seed),
@@ -73,7 +131,7 @@ std::optional<semantics::OptimiseResult> run_under_mpi(const Options& o) {
       semantics::serve_mpi_evaluations(evaluator);
       return std::nullopt;
     }
-    const semantics::OptimiseResult r = semantics::run_optimisation(o.run, semantics::mpi_evaluate_batch(mpi.size()));
+    const semantics::OptimiseResult r = run_staged(o, semantics::mpi_evaluate_batch(mpi.size()));
     semantics::stop_mpi_workers(mpi.size());
     return r;
   } catch (const std::exception& e) {
@@ -92,8 +150,20 @@ void run(Options& o) {
   // run and 0.141x on a quiet machine. Single-threaded, both sides of the
   // ratio are one core's work, as in bench_semantics_modules.
   cv::setNumThreads(1);
-  // The run folder can be made (or is one) before any work.
+  // The run folder can be made (or is one) before any work, and is a new
+  // or empty folder or an earlier run's, never one of other files.
+  OutputPlan plan;
+  plan.input(o.run.dataset / "train.txt", "--dataset's train.txt");
+  plan.input(o.run.dataset / "test.txt", "--dataset's test.txt");
+  plan.input_folder_read_whole(o.run.dataset / "images", "--dataset's images/");
+  plan.input_folder_read_whole(o.run.dataset / "labels", "--dataset's labels/");
+  if (o.config_given || path_exists(o.config)) plan.input(o.config, "--config");
+  for (const std::string& g : o.seed_genomes)
+    if (is_existing_file(g)) plan.input(g, "--seed-genome");
+  plan.output_folder(o.run.out, "--out", optimise_folder_layout());
+  plan.check();
   require_creatable_folder(o.run.out);
+  require_run_state(o.run.out, o.run.resume);
   if (o.config_given || path_exists(o.config)) o.run.ga = semantics::load_ga_options(o.config);
   if (o.population) o.run.ga.population = *o.population;
   if (o.generations) o.run.ga.generations = *o.generations;
@@ -118,7 +188,7 @@ void run(Options& o) {
     return;
   }
 #endif
-  report(o, semantics::run_optimisation(o.run));
+  report(o, run_staged(o));
 }
 
 }  // namespace
@@ -132,13 +202,17 @@ void add_optimise_command(CLI::App& app) {
       "optimise", "Genetic algorithm over the descriptor genome on a dataset's train.txt (validation split from it)");
   cmd->add_option("--dataset", r.dataset, "Dataset folder: train.txt, images/, labels/ (test.txt is never read)")
       ->required();
-  cmd->add_option("--out", r.out, "Run folder: checkpoints, best.genome, best.json, fitness.json/.png, best.fsmodel")
-      ->required();
+  cmd->add_option("--out", r.out,
+                  "Run folder: checkpoints, best.genome, best.json, fitness.json/.png, best.fsmodel (a new or empty "
+                  "folder, or an earlier run's; replaced as a whole when the run ends)")
+      ->required()
+      ->check(kNonEmptyPath);
   cmd->add_option("--population", options->population, "Genomes per generation (default: the config's, 30)")
       ->check(CLI::Range(2, 100000));
   cmd->add_option("--generations", options->generations, "Generations (default: the config's, 20)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--seed", r.seed, "Seed of the first generation, the operators and the validation split")
+      ->check(whole_number(0, kMaxSeed))
       ->capture_default_str();
   cmd->add_option("--workers", r.workers, "Fitness evaluations in parallel (threads)")
       ->check(CLI::Range(1, 1024))

@@ -15,11 +15,14 @@
 
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
+#include "apps/output_kinds.hpp"
 #include "core/map/point_cloud_reader.hpp"
 #include "core/map/semantic_classes.hpp"
 #include "core/plot/png_file.hpp"
 #include "core/trajectory/trajectory_io.hpp"
 #include "core/util/error.hpp"
+#include "core/util/interrupt.hpp"
+#include "core/util/output_policy.hpp"
 #include "render/map_view.hpp"
 #include "render/map_view_framing.hpp"
 
@@ -68,7 +71,15 @@ void run(const Options& o) {
   } catch (const Error& e) {
     throw CLI::ValidationError(e.what());  // a bad command line: exit code 2
   }
+  // The picture replaces only a picture, never an input (output_policy.hpp).
+  OutputPlan plan;
+  plan.input(o.map_ply, "--map-ply");
+  plan.input(o.keyframes, "--keyframes");
+  plan.input(o.trajectory, "--trajectory");
+  plan.output_file(o.out, "--out", png_picture_kind());
+  plan.check();
   require_writable_output(o.out);
+  const InterruptGuard interrupts(InterruptResponse::end_at_once);
 
   const LabelledPointCloud cloud = read_labelled_point_cloud(o.map_ply);
   render::MapViewContent content;
@@ -132,7 +143,7 @@ void add_render_map_command(CLI::App& app) {
   cmd->add_option("--map-ply", o->map_ply, "The labelled point cloud a replay wrote (OUT/map.ply)")->required();
   cmd->add_option("--keyframes", o->keyframes, "Draw the keyframe cameras of OUT/keyframes.txt (TUM)");
   cmd->add_option("--trajectory", o->trajectory, "Draw the camera path of OUT/trajectory.txt (TUM)");
-  cmd->add_option("--out", o->out, "PNG file to write")->required();
+  cmd->add_option("--out", o->out, "PNG file to write (replaces only a PNG picture)")->required()->check(kNonEmptyPath);
   cmd->add_option("--view", o->view,
                   "oblique: from behind the cameras and above; top: straight down (up = the keyframes' mean -y axis)")
       ->check(CLI::IsMember({"oblique", "top"}))

@@ -17,6 +17,7 @@
 #include "apps/replay/ground_truth_labels.hpp"
 #include "apps/replay/replay_log.hpp"
 #include "apps/replay/replay_outputs.hpp"
+#include "apps/replay/replay_paths.hpp"
 #include "apps/replay/replay_render.hpp"
 #include "apps/replay/synth_manifest.hpp"
 #include "core/camera/camera_yaml.hpp"
@@ -46,12 +47,6 @@ const fs::path kDefaultOutput = "facadeslam-out";
 const fs::path kDefaultModel = "models/default.fsmodel";
 const fs::path kDefaultGreyModel = "models/grey.fsmodel";
 const fs::path kDefaultSemanticsConfig = "configs/semantics.yaml";
-// What a replay writes into --out (an older run's folder without report.json
-// still counts as one: require_replaceable_folder).
-const std::vector<std::string> kReplayOutputNames = {"trajectory.txt", "trajectory_online.txt", "keyframes.txt",
-                                                     "map.ply",        "map.classes.json",      "map.fslmap",
-                                                     "report.json",    "trajectory.png",        "render",
-                                                     "segments"};
 
 struct ReplayOptions {
   fs::path sequence, camera, config, out, gt, gt_labels, save_map, load_map;
@@ -106,6 +101,10 @@ int run_replay(ReplayOptions o) {
       throw Error(o.sequence.string() + ": no camera given and no camera.yaml beside the sequence (pass --camera)");
     o.camera = beside;
   }
+  // Every output against every input and the files already there, before
+  // anything is read or written (apps/replay/replay_paths.hpp).
+  check_replay_paths({o.sequence, o.camera, o.config, o.gt, o.gt_labels, o.load_map, o.model, o.grey_model,
+                      o.semantics_config, o.out, o.save_map, o.render});
   const Camera camera = load_camera(o.camera);
   // The ground truth is read before any frame (a run of minutes must not
   // end in "no such file").
@@ -116,8 +115,10 @@ int run_replay(ReplayOptions o) {
   // the end (core/util/staged_folder.hpp): a failed or aborted run leaves
   // the previous folder as it was. Made now, so that a bad --out fails
   // before any frame; removed again if anything below fails.
-  require_replaceable_folder(o.out, "report.json", kReplayOutputNames, "replay");
   StagedFolder staged(o.out);
+  // --render outside --out is staged the same way.
+  std::optional<StagedFolder> staged_render;
+  if (!o.render.empty() && !staged.contains(o.render)) staged_render.emplace(o.render);
   if (!o.save_map.empty() && !staged.contains(o.save_map))
     require_creatable_folder(o.save_map.parent_path().empty() ? "." : o.save_map.parent_path());
   // The render folder is checked (and the video opened) before any frame is
@@ -129,7 +130,7 @@ int run_replay(ReplayOptions o) {
       // frames are skipped, so that the motion keeps about its pace.
       const double video_fps = std::clamp(30.0 / static_cast<double>(o.render_every), 5.0, 30.0);
       ar_render = std::make_unique<ReplayRender>(
-          ReplayRenderOptions{staged.staged(o.render), o.render_every, video_fps,
+          ReplayRenderOptions{staged_render ? staged_render->path() : staged.staged(o.render), o.render_every, video_fps,
                               "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string()},
           camera);
     } catch (const Error& e) {
@@ -163,6 +164,7 @@ int run_replay(ReplayOptions o) {
   if (const fs::path folder = find_ground_truth_labels(o.sequence, o.gt_labels); !folder.empty()) {
     if (slam.semantics.enabled) spdlog::info("ground-truth labels from {}", folder.string());
     gt_labels.emplace(folder);
+    gt_labels->require_files_for(source->image_files());
   }
 
   ReplayLog log;
@@ -219,6 +221,7 @@ int run_replay(ReplayOptions o) {
       write_replay_outputs({staged.path(), o.save_map.empty() ? staged.path() / "map.fslmap" : staged.staged(o.save_map)},
                            info, log, system, source->stats());
   staged.commit();
+  if (staged_render) staged_render->commit();
   std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalised, %zu map resets, %zu keyframes, "
               "%zu points -> %s\n",
               log.frames, log.tracked, log.lost, log.relocalisations, system.map_resets(), system.map().keyframe_count(),
@@ -247,7 +250,7 @@ int run_replay(ReplayOptions o) {
                  "facadeslam: the images are grey (%zu of %zu labelling jobs) and no grey model was given "
                  "(--grey-model): their points stay unlabelled (--semantics off silences this)\n",
                  stats->grey_keyframes, stats->keyframes);
-  if (interrupted) return kExitInterrupted;
+  if (interrupted) return interrupt_exit_code();
   if (!system.initialised()) {
     std::fprintf(stderr, "facadeslam: the map was never initialised (not enough parallax?); see %s\n",
                  (o.out / "report.json").string().c_str());
@@ -266,7 +269,10 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("sequence", options->sequence, "Image folder, TUM rgb.txt list or video file");
   cmd->add_option("--camera", options->camera, "Camera YAML (default: camera.yaml beside the sequence)");
   cmd->add_option("--config", options->config, "SLAM settings YAML (see configs/slam.yaml)");
-  cmd->add_option("--out", options->out, "Output folder (default: ./facadeslam-out)");
+  cmd->add_option("--out", options->out,
+                  "Output folder (default: ./facadeslam-out), replaced as a whole at the end: a new or empty folder, "
+                  "or an earlier replay output")
+      ->check(kNonEmptyPath);
   cmd->add_option("--gt", options->gt,
                   "Ground-truth trajectory, TUM or KITTI (line i: frame i's pose): adds ATE and KITTI's relative "
                   "errors to the report");
@@ -278,7 +284,9 @@ void add_replay_command(CLI::App& app) {
                 "Threaded: never wait for the map maker, as with a live camera (by default the tracker waits until "
                 "the map maker has taken in each keyframe, so a busy machine does not make it track on a stale map)")
       ->excludes("--sync");
-  cmd->add_option("--save-map", options->save_map, "Where to write the map (default: OUT/map.fslmap)");
+  cmd->add_option("--save-map", options->save_map,
+                  "Where to write the map (default: OUT/map.fslmap); replaces only a map file")
+      ->check(kNonEmptyPath);
   cmd->add_option("--load-map", options->load_map, "Start from a saved map instead of initialising");
   // Ranges checked as numbers: a negative count must not wrap round to 2^64 - 5.
   cmd->add_option("--start", options->start, "Skip this many frames first")->check(CLI::Range(0.0, 1e12));
@@ -300,9 +308,10 @@ void add_replay_command(CLI::App& app) {
                   "Forest model for grey images (a grey camera; `train --grey`; default: models/grey.fsmodel)");
   auto* render_option = cmd->add_option("--render", options->render,
                                  "Render the augmented view (AR overlay + map view) of the tracked frames into this "
-                                 "folder: PNG frames, augmented.mp4, contact_sheet.png");
+                                 "folder: PNG frames, augmented.mp4, contact_sheet.png (replaced as a whole at the end)")
+      ->check(kNonEmptyPath);
   cmd->add_option("--render-every", options->render_every, "With --render: render every Nth frame (default 1)")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number(1, 1000000))
       ->needs(render_option);
   cmd->callback([options] {
     const int code = run_replay(*options);

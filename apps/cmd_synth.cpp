@@ -12,8 +12,10 @@
 
 #include "apps/cli_support.hpp"
 #include "apps/commands.hpp"
+#include "apps/output_kinds.hpp"
 #include "core/util/error.hpp"
 #include "core/util/interrupt.hpp"
+#include "core/util/output_policy.hpp"
 #include "core/util/progress.hpp"
 #include "core/util/staged_folder.hpp"
 #include "sequences/synth/scene_loader.hpp"
@@ -32,11 +34,6 @@ struct SynthCliOptions {
   int sheet_frames = 6;
 };
 
-// What synth writes into --out (require_replaceable_folder).
-const std::vector<std::string> kSynthOutputNames = {"rgb",        "label",       "depth",       "rgb.txt",
-                                                    "depth.txt",  "groundtruth.txt", "camera.yaml", "labels.txt",
-                                                    "scene.yaml", "synth.json"};
-
 // Thrown from the progress callback after Ctrl-C: the frame loop stops.
 struct Interrupted {};
 
@@ -51,7 +48,14 @@ void run(const SynthCliOptions& o) {
       throw CLI::ValidationError(e.what());
     }
   }
-  require_file(o.scene, "a scene YAML file (see configs/scenes/)");
+  require_readable_file(o.scene, "a scene YAML file (see configs/scenes/)");
+  // --out replaces only an earlier synth output, never the scene's own
+  // folder or photos; the contact sheet only a picture (output_policy.hpp).
+  OutputPlan plan;
+  plan.input(o.scene, "--scene");
+  plan.output_folder(o.out, "--out", synth_folder_layout());
+  plan.output_file(o.contact_sheet, "--contact-sheet", png_picture_kind());
+  plan.check();
   synth::SceneSpec spec = synth::load_scene(o.scene);
   // Command-line overrides, each checked as the scene file's keys are.
   if (o.frames) spec.frames = *o.frames;
@@ -64,7 +68,10 @@ void run(const SynthCliOptions& o) {
   // The sequence is rendered into a staging folder beside --out and moved
   // into place at the end: a failed or interrupted run leaves the previous
   // sequence as it was, never frames of two runs (core/util/staged_folder.hpp).
-  require_replaceable_folder(o.out, "synth.json", kSynthOutputNames, "synth");
+  // The scene's camera and photos, known once it is read, are inputs too.
+  plan.input(spec.camera_file, "the scene's camera");
+  plan.input(spec.photo_root, "the scene's photos");
+  plan.check();
   StagedFolder staged(o.out);
   if (!o.contact_sheet.empty() && !staged.contains(o.contact_sheet)) require_writable_output(o.contact_sheet);
 
@@ -85,7 +92,7 @@ void run(const SynthCliOptions& o) {
   } catch (const Interrupted&) {
     progress.finish();
     std::fprintf(stderr, "facadeslam: synth interrupted: %s left as it was\n", o.out.string().c_str());
-    throw CLI::RuntimeError(kExitInterrupted);
+    throw CLI::RuntimeError(interrupt_exit_code());
   }
   staged.commit();
   progress.finish();
@@ -105,7 +112,8 @@ void add_synth_command(CLI::App& app) {
       "synth", "Render a synthetic street sequence from real facade photos: colour, labels, depth, ground truth");
   cmd->add_option("--scene", o->scene, "Scene YAML file (configs/scenes/*.yaml)")->required();
   cmd->add_option("--out", o->out, "Output folder (replaced as a whole at the end: a new or empty folder, or an earlier synth output)")
-      ->required();
+      ->required()
+      ->check(kNonEmptyPath);
   cmd->add_option("--frames", o->frames, "Number of frames (overrides the scene's `frames`)")
       ->check(CLI::Range(1, 1000000));
   cmd->add_option("--fps", o->fps, "Frames per second (overrides the scene's `fps`)")->check(CLI::Range(0.1, 1000.0));
@@ -115,7 +123,8 @@ void add_synth_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--resolution", o->resolution,
                   "Image size WIDTHxHEIGHT (default: the scene's; the camera is rescaled)");
-  cmd->add_option("--contact-sheet", o->contact_sheet, "Also write a contact sheet PNG of a few frames and labels");
+  cmd->add_option("--contact-sheet", o->contact_sheet, "Also write a contact sheet PNG of a few frames and labels")
+      ->check(kNonEmptyPath);
   cmd->add_option("--sheet-frames", o->sheet_frames, "Frames on the contact sheet")
       ->check(CLI::Range(1, 32))
       ->capture_default_str();

@@ -12,7 +12,11 @@
 #include "apps/commands.hpp"
 #include "apps/genome_option.hpp"
 #include "core/util/error.hpp"
+#include "apps/output_kinds.hpp"
+#include "core/util/interrupt.hpp"
 #include "core/util/json.hpp"
+#include "core/util/output_policy.hpp"
+#include "core/util/path_checks.hpp"
 #include "semantics/evaluation/model_training.hpp"
 #include "semantics/forest/forest_model.hpp"
 
@@ -40,14 +44,34 @@ void run(Options& o) {
   if (name.size() <= 8 || name.compare(name.size() - 8, 8, ".fsmodel") != 0)
     fail_file(o.out, "expected a model file name ending in .fsmodel");
   const std::filesystem::path summary = summary_path(o.out);
+  // The model and its summary replace only an earlier model and summary,
+  // never an input (the genome, the dataset's lists): output_policy.hpp.
+  OutputPlan plan;
+  plan.input(o.training.dataset / "train.txt", "--dataset's train.txt");
+  plan.input(o.training.dataset / "test.txt", "--dataset's test.txt");
+  plan.input_folder_read_whole(o.training.dataset / "images", "--dataset's images/");
+  plan.input_folder_read_whole(o.training.dataset / "labels", "--dataset's labels/");
+  if (is_existing_file(o.genome)) plan.input(o.genome, "--genome");
+  plan.output_file(o.out, "--out", model_file_kind());
+  plan.output_file(summary, "the summary (--out's NAME.fsmodel.json)", training_summary_kind());
+  plan.check();
   require_writable_output(o.out);
   require_writable_output(summary);
   semantics::training_forest_params(o.training);
 
+  // Training keeps nothing worth writing before its end: Ctrl-C, SIGTERM and
+  // SIGHUP end it at once, the previous model untouched (interrupt.hpp).
+  const InterruptGuard interrupts(InterruptResponse::end_at_once);
   const semantics::TrainingRun run = semantics::train_model(o.training);
-  semantics::save_forest_model(o.out, run.model);
-  const std::uintmax_t bytes = std::filesystem::file_size(o.out);
-  write_json(summary, semantics::training_summary_json(run, o.training, o.out, bytes));
+  std::uintmax_t bytes = 0;
+  {
+    // The model and its summary are one output: a signal while they are
+    // written waits until both are in place.
+    const AbortDeferral both_or_neither;
+    semantics::save_forest_model(o.out, run.model);
+    bytes = std::filesystem::file_size(o.out);
+    write_json(summary, semantics::training_summary_json(run, o.training, o.out, bytes));
+  }
   std::printf("trained %s: %zu rows from %zu images, %d trees of depth <= %d (%zu nodes) in %.1f s\n",
               run.model.descriptor.c_str(), run.set.samples, run.train_images, run.model.params.trees,
               run.model.params.max_depth, run.model.forest.nodes().size(), run.total_seconds);
@@ -73,8 +97,10 @@ void add_train_command(CLI::App& app) {
   cmd->add_flag("--balance", t.balance,
                 "Class-balanced training sample: every class sampled to the median class size");
   cmd->add_option("--max-samples", t.max_samples, "At most N training keypoints, drawn at random (0 = all)")
+      ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
   cmd->add_option("--max-train", t.max_train_images, "Use only the first N images of train.txt (0 = all)")
+      ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
   cmd->add_option("--step", t.step, "Grid step in pixels")->check(CLI::Range(1, 10000))->capture_default_str();
   cmd->add_option("--keypoints", options->keypoints,
@@ -89,11 +115,16 @@ void add_train_command(CLI::App& app) {
       ->check(CLI::Range(0.05, 8.0))
       ->capture_default_str();
   cmd->add_flag("--grey", t.grey, "Train on the photos turned grey: a model for grey cameras (KITTI's snippet)");
-  cmd->add_option("--seed", t.seed, "Seed of the training-sample draw and of the forest")->capture_default_str();
+  cmd->add_option("--seed", t.seed, "Seed of the training-sample draw and of the forest")
+      ->check(whole_number(0, kMaxSeed))
+      ->capture_default_str();
   cmd->add_option("--trees", t.trees, "Number of trees (default: the genome's)")->check(CLI::Range(1, 10000));
   cmd->add_option("--depth", t.max_depth, "Maximum tree depth (default: the genome's)")->check(CLI::Range(1, 1000));
-  cmd->add_option("--out", options->out, "The model file to write (NAME.fsmodel; the summary goes to NAME.fsmodel.json)")
-      ->required();
+  cmd->add_option("--out", options->out,
+                  "The model file to write (NAME.fsmodel; the summary goes to NAME.fsmodel.json); replaces only an "
+                  "earlier model")
+      ->required()
+      ->check(kNonEmptyPath);
   cmd->callback([options] { run(*options); });
 }
 

@@ -36,6 +36,10 @@ class FrameSource {
   virtual const ReadStats& stats() const { return stats_; }
   // One line for logs and reports, e.g. "image folder data/seq (218 images)".
   virtual std::string description() const = 0;
+  // The image files the frames will be decoded from, in order, when the
+  // reader knows them before reading (image folders and lists; empty for a
+  // video): what goes with each frame can be checked before the run.
+  virtual std::vector<std::filesystem::path> image_files() const { return {}; }
 
  protected:
   ReadStats stats_;

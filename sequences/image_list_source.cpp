@@ -75,4 +75,11 @@ void ImageListSource::check_size(const cv::Mat& image, const std::filesystem::pa
                         " (expected every frame to have the same size)");
 }
 
+std::vector<std::filesystem::path> ImageListSource::image_files() const {
+  std::vector<std::filesystem::path> files;
+  files.reserve(entries_.size());
+  for (const ImageEntry& entry : entries_) files.push_back(entry.path);
+  return files;
+}
+
 }  // namespace facadeslam

@@ -39,6 +39,7 @@ class ImageListSource : public FrameSource {
   std::optional<Frame> next() override;
   std::size_t size_hint() const override { return entries_.size(); }
   std::string description() const override;
+  std::vector<std::filesystem::path> image_files() const override;
 
  private:
   void check_size(const cv::Mat& image, const std::filesystem::path& path);

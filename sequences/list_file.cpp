@@ -48,7 +48,7 @@ double parse_timestamp(std::string_view field, const std::filesystem::path& path
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
-    fail_line(path, line, "'" + text + "' is not a timestamp (expected a number of seconds)");
+    fail_line(path, line, quoted_for_message(text) + " is not a timestamp (expected a number of seconds)");
   return value;
 }
 

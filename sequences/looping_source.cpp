@@ -63,4 +63,8 @@ std::string LoopingSource::description() const {
   return text;
 }
 
+std::vector<std::filesystem::path> LoopingSource::image_files() const {
+  return current_ ? current_->image_files() : std::vector<std::filesystem::path>{};
+}
+
 }  // namespace facadeslam

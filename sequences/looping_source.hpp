@@ -30,6 +30,8 @@ class LoopingSource : public FrameSource {
   std::size_t size_hint() const override;
   const ReadStats& stats() const override;
   std::string description() const override;
+  // One pass's files (every pass plays the same).
+  std::vector<std::filesystem::path> image_files() const override;
 
  private:
   Opener open_;

@@ -30,6 +30,9 @@ SequenceKind detect_sequence_kind(const fs::path& path) {
   if (!fs::exists(path, ec))
     fail_file(path, "no such file or folder (expected an image folder, a TUM rgb.txt list or a "
                     "video file)");
+  // A FIFO or a device would block or never end: said for what it is.
+  if (!is_existing_folder(path) && !is_readable_file(path))
+    fail_file(path, describe_path(path) + " (expected an image folder, a TUM rgb.txt list or a video file)");
   if (fs::is_directory(path, ec))
     return fs::is_regular_file(path / "rgb.txt", ec) ? SequenceKind::tum_list
                                                      : SequenceKind::image_folder;

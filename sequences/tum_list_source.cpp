@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "core/util/error.hpp"
+#include "core/util/input_confinement.hpp"
+#include "core/util/path_checks.hpp"
 #include "sequences/list_file.hpp"
 
 namespace facadeslam {
@@ -15,13 +17,11 @@ constexpr const char* kExpectedLines = "lines 'timestamp relative/path.png'";
 
 std::vector<ImageEntry> list_entries(const fs::path& list_file, const SequenceOptions& options) {
   validate(options);
-  std::error_code ec;
-  if (!fs::exists(list_file, ec))
+  if (!path_exists(list_file))
     fail_file(list_file, std::string("no such file (expected a TUM rgb.txt list of ") +
                              kExpectedLines + ")");
-  if (fs::is_directory(list_file, ec))
-    fail_file(list_file, std::string("is a folder (expected a TUM rgb.txt list of ") +
-                             kExpectedLines + ")");
+  if (!is_readable_file(list_file))
+    fail_file(list_file, describe_path(list_file) + " (expected a TUM rgb.txt list of " + kExpectedLines + ")");
   const auto lines =
       read_list_file(list_file, std::string("a TUM rgb.txt list of ") + kExpectedLines);
   if (lines.empty())
@@ -42,9 +42,13 @@ std::vector<ImageEntry> list_entries(const fs::path& list_file, const SequenceOp
                          list_file);
     const fs::path listed(line.fields[1]);
     const fs::path image = listed.is_absolute() ? listed : base / listed;
-    if (!fs::is_regular_file(image, ec))
+    // Inside the list's folder (input_confinement.hpp): a list from
+    // elsewhere must not make the replay read /etc/passwd or ../../...
+    require_confined(image, base.empty() ? fs::path(".") : base, list_file, line.number, line.fields[1]);
+    if (!is_readable_file(image))
       fail_line(list_file, line.number,
-                "listed image " + image.string() + " does not exist (expected paths relative to " +
+                "listed image " + image.string() + " " + describe_path(image) +
+                    " (expected an image file; paths relative to " +
                     (base.empty() ? std::string(".") : base.string()) + ")");
     all.push_back({i, timestamp, image});
   }

@@ -22,7 +22,8 @@ fs::path find_ground_truth_labels(const fs::path& sequence, const fs::path& give
 GroundTruthLabelFiles::GroundTruthLabelFiles(fs::path folder) : folder_(std::move(folder)) {}
 
 void GroundTruthLabelFiles::add(const Frame& frame) {
-  if (frame.source.empty()) throw Error("ground-truth labels need frames read from image files");
+  if (frame.source.empty())
+    fail_file(folder_, "ground-truth labels need frames read from image files (a video's frames have no names)");
   const bool first = names_.empty();
   const std::string name = frame.source.filename().string();
   const auto [it, added] = name_ids_.emplace(name, static_cast<std::uint32_t>(names_.size()));
@@ -35,9 +36,18 @@ void GroundTruthLabelFiles::add(const Frame& frame) {
   }
 }
 
+void GroundTruthLabelFiles::require_files_for(const std::vector<fs::path>& frame_files) const {
+  for (const fs::path& frame : frame_files) {
+    const fs::path label = folder_ / frame.filename();
+    if (!is_readable_file(label))
+      fail_file(label, "the ground-truth label image of frame " + frame.filename().string() + " " +
+                           describe_path(label) + " (--gt-labels: a label PNG named like each frame)");
+  }
+}
+
 cv::Mat GroundTruthLabelFiles::class_ids(std::size_t frame_index) const {
   if (frame_index >= name_of_frame_.size() || name_of_frame_[frame_index] == 0)
-    throw Error("ground-truth labels: frame " + std::to_string(frame_index) + " was not read");
+    fail_file(folder_, "ground-truth labels: frame " + std::to_string(frame_index) + " was not read");
   const fs::path path = folder_ / names_[name_of_frame_[frame_index] - 1];
   const cv::Mat colours = semantics::read_label_image(path);
   if (colours.size() != frame_size_)

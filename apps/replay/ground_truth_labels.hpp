@@ -30,6 +30,11 @@ class GroundTruthLabelFiles {
   // before the work rather than after it.
   void add(const Frame& frame);
 
+  // Every frame file's label image is there (a file of the frame's name in
+  // the folder), checked before the run: a folder missing a later frame's
+  // label fails now, not at that frame. Error naming the first one missing.
+  void require_files_for(const std::vector<std::filesystem::path>& frame_files) const;
+
   // Class ids (CV_8UC1) of a frame added before. Throws Error naming the file
   // when it is missing, not a label image, or not the frame's size.
   cv::Mat class_ids(std::size_t frame_index) const;

@@ -55,8 +55,22 @@ std::string printable(std::string_view text) {
 
 std::string quoted_for_message(std::string_view text) {
   std::string out = "'";
-  out.append(printable(text)).push_back('\'');
-  return out;
+  if (text.size() <= kMaxQuotedBytes) return out.append(printable(text)).append("'");
+  out.append(printable(text.substr(0, kMaxQuotedBytes))).append("...' (");
+  return out.append(std::to_string(text.size())).append(" bytes)");
+}
+
+std::string one_line_message(std::string_view text, std::size_t max_bytes) {
+  std::string line = printable(text);
+  if (line.size() <= max_bytes) return line;
+  // The head names the file and what failed, the tail what was expected.
+  // Cut between characters, not inside a UTF-8 sequence.
+  const auto continuation = [&](std::size_t i) { return (static_cast<unsigned char>(line[i]) & 0xC0) == 0x80; };
+  std::size_t head = max_bytes - max_bytes / 3 - 5, tail_start = line.size() - max_bytes / 3;
+  while (head > 0 && continuation(head)) --head;
+  while (tail_start < line.size() && continuation(tail_start)) ++tail_start;
+  std::string shortened = line.substr(0, head);
+  return shortened.append(" ... ").append(line.substr(tail_start));
 }
 
 }  // namespace facadeslam

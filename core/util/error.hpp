@@ -22,7 +22,14 @@ class Error : public std::runtime_error {
 // bytes that are not valid UTF-8 (a hostile file's raw bytes) as \xNN;
 // valid UTF-8 (a path with umlauts) is kept.
 std::string printable(std::string_view text);
-// printable(text) in single quotes.
+// printable(text) in single quotes, its first kMaxQuotedBytes bytes only
+// ("... (N bytes)" after them): a 1 MB line of a hostile file is not echoed.
 std::string quoted_for_message(std::string_view text);
+inline constexpr std::size_t kMaxQuotedBytes = 80;
+
+// A whole message fit for one terminal line: printable(), and when longer
+// than `max_bytes`, its start and end around " ... ": what failed and what
+// was expected stay.
+std::string one_line_message(std::string_view text, std::size_t max_bytes = 480);
 
 }  // namespace facadeslam

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstring>
+#include <iterator>
 #include <dirent.h>
 #include <fcntl.h>
 #include <unistd.h>
@@ -11,8 +12,10 @@
 namespace facadeslam {
 namespace {
 
-volatile std::sig_atomic_t g_requested = 0;
-struct sigaction g_previous_int {}, g_previous_term {};
+volatile std::sig_atomic_t g_requested = 0;  // the signal that asked to stop, 0 before one came
+volatile std::sig_atomic_t g_end_at_once = 0;
+constexpr int kHandledSignals[] = {SIGINT, SIGTERM, SIGHUP};
+struct sigaction g_previous[std::size(kHandledSignals)];
 
 // The abort clean-up folder: an absolute path, valid while g_cleanup_set.
 char g_cleanup[4096];
@@ -58,14 +61,12 @@ void remove_tree(int dir_fd, const char* name, int depth) {
   ::unlinkat(dir_fd, name, AT_REMOVEDIR);
 }
 
-[[noreturn]] void die_of(int signal) {
-  std::signal(signal, SIG_DFL);
-  std::raise(signal);
-  ::_exit(128 + signal);
-}
+// The exit code a shell gives a process ended by `signal` (130 for SIGINT),
+// the same from the handler and from AbortDeferral's end.
+[[noreturn]] void die_of(int signal) { ::_exit(128 + signal); }
 
 extern "C" void on_interrupt(int signal) {
-  if (g_requested) {
+  if (g_requested || g_end_at_once) {
     // The second one: now, as if we had never caught it (once a folder
     // being moved into place is there).
     if (g_deferring) {
@@ -73,30 +74,35 @@ extern "C" void on_interrupt(int signal) {
       return;
     }
     for (CleanupFileSlot& slot : g_cleanup_files)
-      if (slot.state.load(std::memory_order_acquire) == 2) ::unlink(slot.path);
+      if (slot.state.load(std::memory_order_acquire) == 2) remove_tree(AT_FDCWD, slot.path, 0);
     if (g_cleanup_set) remove_tree(AT_FDCWD, g_cleanup, 0);
     die_of(signal);
   }
-  g_requested = 1;
+  g_requested = signal;
 }
 
 }  // namespace
 
-InterruptGuard::InterruptGuard() {
+InterruptGuard::InterruptGuard(InterruptResponse response) {
   g_requested = 0;
+  g_end_at_once = response == InterruptResponse::end_at_once;
   struct sigaction action {};
   action.sa_handler = on_interrupt;
   sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, &g_previous_int);
-  sigaction(SIGTERM, &action, &g_previous_term);
+  // Each signal blocks the others while its handler runs: a SIGTERM landing
+  // inside the SIGINT handler's clean-up must not start a second one.
+  for (const int signal : kHandledSignals) sigaddset(&action.sa_mask, signal);
+  for (std::size_t i = 0; i < std::size(kHandledSignals); ++i) sigaction(kHandledSignals[i], &action, &g_previous[i]);
 }
 
 InterruptGuard::~InterruptGuard() {
-  sigaction(SIGINT, &g_previous_int, nullptr);
-  sigaction(SIGTERM, &g_previous_term, nullptr);
+  for (std::size_t i = 0; i < std::size(kHandledSignals); ++i) sigaction(kHandledSignals[i], &g_previous[i], nullptr);
+  g_end_at_once = 0;
 }
 
 bool interrupt_requested() { return g_requested != 0; }
+
+int interrupt_exit_code() { return g_requested != 0 ? 128 + g_requested : kExitInterrupted; }
 
 void set_abort_cleanup_folder(const std::filesystem::path& folder) {
   g_cleanup_set = 0;

@@ -5,10 +5,14 @@
 #include <cstdio>
 #include <string>
 #include <system_error>
+#include <vector>
+#include <fcntl.h>  // AT_FDCWD
 #include <unistd.h>
 
 #include "core/util/error.hpp"
 #include "core/util/interrupt.hpp"
+#include "core/util/output_lock.hpp"
+#include "core/util/path_checks.hpp"
 
 namespace facadeslam {
 namespace {
@@ -24,24 +28,58 @@ fs::path sibling(const fs::path& target, const char* infix, long pid) {
 }
 
 // Staging and old folders of earlier runs of `target` whose process has
-// ended (killed with SIGKILL, or the machine went down).
-void remove_stale_siblings(const fs::path& target) {
+// ended (killed with SIGKILL, or the machine went down). With `start`, the
+// abandoned staging folder furthest on (if any is further on than the
+// target) is kept and returned, the others removed.
+fs::path remove_stale_siblings(const fs::path& target, const StagedFolderStart& start) {
   std::error_code ec;
   std::string prefix = ".";
   prefix.append(target.filename().string());
+  fs::path kept;
   for (const char* infix : {".tmp-", ".old-"}) {
-    std::string start = prefix;
-    start.append(infix);
+    std::string begin = prefix;
+    begin.append(infix);
+    std::vector<fs::path> stale;
     for (fs::directory_iterator it(target.parent_path(), ec), end; !ec && it != end; it.increment(ec)) {
       const std::string name = it->path().filename().string();
-      if (name.size() <= start.size() || name.compare(0, start.size(), start) != 0) continue;
-      const std::string digits = name.substr(start.size());
+      if (name.size() <= begin.size() || name.compare(0, begin.size(), begin) != 0) continue;
+      const std::string digits = name.substr(begin.size());
       if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
       const long pid = std::stol(digits);
       if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
-      std::error_code ignored;
-      fs::remove_all(it->path(), ignored);
+      stale.push_back(it->path());
     }
+    for (const fs::path& path : stale) {
+      const bool candidate = std::string(infix) == ".tmp-" && start.from_target && start.abandoned_is_newer &&
+                             fs::is_directory(path, ec);
+      if (candidate && start.abandoned_is_newer(path, kept.empty() ? target : kept)) {
+        if (!kept.empty()) fs::remove_all(kept, ec);
+        kept = path;
+        continue;
+      }
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  }
+  return kept;
+}
+
+// The files of `from` into the empty folder `to`: hard links (the runs that
+// continue a folder replace files by renaming, never write into them), or
+// copies where links cannot be made.
+void fill_from(const fs::path& from, const fs::path& to, const fs::path& target) {
+  std::error_code ec;
+  fs::copy(from, to, fs::copy_options::recursive | fs::copy_options::create_hard_links, ec);
+  if (!ec) return;
+  for (fs::directory_iterator it(to, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code ignored;
+    fs::remove_all(it->path(), ignored);
+  }
+  ec.clear();
+  fs::copy(from, to, fs::copy_options::recursive, ec);
+  if (ec) {
+    std::string what = "cannot copy the earlier run's files to continue it (";
+    fail_file(target, what.append(ec.message()).append(")"));
   }
 }
 
@@ -52,7 +90,7 @@ void remove_stale_siblings(const fs::path& target) {
 
 }  // namespace
 
-StagedFolder::StagedFolder(fs::path target) {
+StagedFolder::StagedFolder(fs::path target, const StagedFolderStart& start) {
   std::error_code ec;
   target_ = fs::absolute(target, ec).lexically_normal();
   if (target_.has_filename() == false) target_ = target_.parent_path();
@@ -72,7 +110,13 @@ StagedFolder::StagedFolder(fs::path target) {
     fail_file(target, what.append(ec.message()).append(")"));
   }
   created_root_ = first_missing;
-  remove_stale_siblings(target_);
+  try {
+    lock_ = std::make_unique<OutputLock>(target_);
+  } catch (const Error&) {
+    if (!created_root_.empty()) fs::remove_all(created_root_, ec);
+    throw;
+  }
+  const fs::path abandoned = remove_stale_siblings(target_, start);
   staging_ = sibling(target_, ".tmp-", ::getpid());
   fs::remove_all(staging_, ec);
   if (!fs::create_directory(staging_, ec) || ec) {
@@ -80,12 +124,25 @@ StagedFolder::StagedFolder(fs::path target) {
     if (!created_root_.empty()) fs::remove_all(created_root_, ec);
     fail_file(target, what.append(ec ? ec.message() : std::string("it exists")).append(")"));
   }
-  set_abort_cleanup_folder(staging_);
+  abort_cleanup_ = std::make_unique<AbortCleanupFile>(staging_);
+  if (!abandoned.empty() || (start.from_target && is_existing_folder(target_))) {
+    try {
+      fill_from(abandoned.empty() ? target_ : abandoned, staging_, target);
+    } catch (const Error&) {
+      abort_cleanup_.reset();
+      fs::remove_all(staging_, ec);
+      if (!created_root_.empty()) fs::remove_all(created_root_, ec);
+      throw;
+    }
+    // Its files live on in the staging folder.
+    if (!abandoned.empty()) fs::remove_all(abandoned, ec);
+  }
 }
 
 StagedFolder::~StagedFolder() {
   if (committed_) return;
-  set_abort_cleanup_folder({});
+  // The lock goes last (a member): the folders are cleaned up under it.
+  abort_cleanup_.reset();
   std::error_code ec;
   fs::remove_all(staging_, ec);
   if (!created_root_.empty()) fs::remove_all(created_root_, ec);
@@ -132,7 +189,7 @@ void StagedFolder::commit() {
     fs::remove_all(old, ec);
   }
   committed_ = true;
-  set_abort_cleanup_folder({});
+  abort_cleanup_.reset();
 }
 
 }  // namespace facadeslam

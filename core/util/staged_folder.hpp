@@ -12,17 +12,36 @@
 // the new one in and removes the old: between the two renames, a window of
 // microseconds, the target does not exist; a crash inside it leaves the old
 // folder as .NAME.old-PID beside it.
+//
+// While the run lasts it holds the target's lock (output_lock.hpp): a second
+// run into the same target is refused at once, naming the first.
 #include <filesystem>
+#include <functional>
+#include <memory>
 
 namespace facadeslam {
+
+class AbortCleanupFile;
+class OutputLock;
+
+// What a staging folder starts with: nothing (a run that writes everything
+// anew), or the target's files, for a run that continues an earlier one
+// (optimise --resume). Such a run's staging folder, left by a SIGKILL, may
+// be further on than the target: `abandoned_is_newer(abandoned, than)` says
+// so, and the run then continues from it.
+struct StagedFolderStart {
+  bool from_target = false;
+  std::function<bool(const std::filesystem::path& abandoned, const std::filesystem::path& than)> abandoned_is_newer;
+};
 
 class StagedFolder {
  public:
   // Creates the empty staging folder beside `target` (and target's missing
-  // ancestors, removed again if the run fails). Staging folders of earlier
-  // runs whose process is gone are removed. An Error naming `target` when
-  // it is a file or nothing can be made beside it.
-  explicit StagedFolder(std::filesystem::path target);
+  // ancestors, removed again if the run fails) and locks the target.
+  // Staging folders of earlier runs whose process is gone are removed. An
+  // Error naming `target` when it is a file, nothing can be made beside it,
+  // or another run is writing it.
+  explicit StagedFolder(std::filesystem::path target, const StagedFolderStart& start = {});
   ~StagedFolder();
   StagedFolder(const StagedFolder&) = delete;
   StagedFolder& operator=(const StagedFolder&) = delete;
@@ -42,6 +61,8 @@ class StagedFolder {
  private:
   std::filesystem::path target_, staging_;
   std::filesystem::path created_root_;  // the outermost ancestor this made, or empty
+  std::unique_ptr<OutputLock> lock_;
+  std::unique_ptr<AbortCleanupFile> abort_cleanup_;  // the staging folder, for a signal that ends the run
   bool committed_ = false;
 };
 

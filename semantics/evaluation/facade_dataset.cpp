@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/util/error.hpp"
+#include "core/util/input_confinement.hpp"
 #include "semantics/evaluation/label_image.hpp"
 #include "semantics/text.hpp"
 
@@ -60,6 +61,9 @@ std::vector<LabelledImage> read_facade_split(const fs::path& root, const std::st
       const std::string e = extension;
       if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0) name.resize(name.size() - e.size());
     }
+    // Names stay inside the dataset (core/util/input_confinement.hpp).
+    require_confined(root / "images" / name, root, list_path, static_cast<std::size_t>(line_number), name);
+    require_confined(root / "labels" / name, root, list_path, static_cast<std::size_t>(line_number), name);
     LabelledImage entry;
     entry.name = name;
     entry.image = find_image(root / "images", name);

@@ -130,7 +130,9 @@ struct VegetationSpec {
 };
 
 struct SceneSpec {
-  std::filesystem::path path;  // the scene file
+  std::filesystem::path path;         // the scene file
+  std::filesystem::path camera_file;  // the camera YAML it names (empty: built in)
+  std::filesystem::path photo_root;   // the folder its photos are in
   Camera camera{640, 480, PinholeRadTan{500, 500, 319.5, 239.5}};
   double fps = 30.0;
   int frames = 1;

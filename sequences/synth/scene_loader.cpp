@@ -1,6 +1,8 @@
 #include "sequences/synth/scene_loader.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
@@ -8,6 +10,7 @@
 #include "core/camera/camera_yaml.hpp"
 #include "core/config/config_node.hpp"
 #include "core/util/error.hpp"
+#include "core/util/input_confinement.hpp"
 #include "core/util/path_checks.hpp"
 #include "sequences/synth/label_classes.hpp"
 
@@ -41,13 +44,36 @@ cv::Vec3d colour(const ConfigNode& node, const std::string& key, const cv::Vec3d
   return {v[0], v[1], v[2]};
 }
 
-// An existing file under `root`, named by `key` of `node`.
+// A scene's photos stay inside its `photos` folder and are image files
+// (input_confinement.hpp): a scene from elsewhere must not make synth open
+// /etc/passwd or climb out with ../../... The `photos` folder and the
+// `camera` file themselves are the scene's named resources and may lie
+// anywhere (the shipped street scenes take their photos from the shared
+// data beside the project), but the camera must be a YAML file.
+constexpr const char* kOutsidePaths = "pass --allow-outside-paths to read it";
+
+bool has_extension(const fs::path& path, std::initializer_list<const char*> extensions) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* e : extensions)
+    if (extension == e) return true;
+  return false;
+}
+
+// An existing image file under `root`, named by `key` of `node`.
 fs::path existing_file(const ConfigNode& node, const std::string& key, const fs::path& root) {
   const std::string relative = node.get_string(key);
   const fs::path path = root / relative;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    node.fail(key, "an existing file (looked for " + path.string() + ")", relative);
+  if (!path_confined(path, root))
+    node.fail(key, std::string("a path inside the photos folder ") + root.string() + " (" + kOutsidePaths + ")",
+              relative);
+  if (!paths_outside_inputs_allowed() &&
+      !has_extension(path, {".jpg", ".jpeg", ".png", ".bmp", ".tif", ".tiff", ".ppm", ".pgm"}))
+    node.fail(key, std::string("an image file (.jpg, .jpeg, .png, .bmp, .tif, .tiff, .ppm, .pgm; ") + kOutsidePaths +
+                       " anyway)",
+              relative);
+  if (!is_readable_file(path))
+    node.fail(key, "an existing file (looked for " + path.string() + ", which " + describe_path(path) + ")", relative);
   return path;
 }
 
@@ -260,10 +286,13 @@ SceneSpec load_scene(const fs::path& path) {
   const fs::path folder = path.parent_path();
 
   const std::string camera_file = root.get_string("camera");
+  if (!paths_outside_inputs_allowed() && !has_extension(camera_file, {".yaml", ".yml"}))
+    root.fail("camera", std::string("a camera YAML file (.yaml or .yml; ") + kOutsidePaths + " anyway)", camera_file);
   if (!is_existing_file(folder / camera_file))
     root.fail("camera", "an existing camera YAML file, relative to the scene file (looked for " +
                             (folder / camera_file).string() + ")");
   scene.camera = load_camera(folder / camera_file);
+  scene.camera_file = folder / camera_file;
   if (root.has("resolution")) {
     const auto r = root.get_doubles("resolution", 2, Range::closed(16, 8192));
     if (r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
@@ -276,6 +305,7 @@ SceneSpec load_scene(const fs::path& path) {
   scene.noise_sigma = root.get_double("noise", Range::closed(0, 100), 0.0);
   scene.anisotropy = root.get_double("anisotropy", Range::closed(1, 16), 1.0);
   const fs::path photo_root = folder / root.get_string("photos", ".");
+  scene.photo_root = photo_root;
   std::error_code ec;
   if (!fs::is_directory(photo_root, ec))
     root.fail("photos", "an existing folder, relative to the scene file (looked for " + photo_root.string() + ")",

@@ -38,10 +38,15 @@ TEST(ReplayRenderOptions, BadRenderOptionsAreUsageErrorsBeforeTheReplay) {
   };
   expect_usage_error(replay("--render " + quoted(dir / "x") + " --render-every 0"), "--render-every");
   expect_usage_error(replay("--render-every 3"), "--render");
-  // A file where the folder should be.
+  // A file where the folder should be: refused by the output policy before
+  // anything is read (a bad file, exit code 1, like --out's), and left alone.
   const fs::path file = dir / "a-file";
   { std::ofstream(file) << "x"; }
-  expect_usage_error(replay("--render " + quoted(file)), "cannot create the render folder");
+  const test::CliResult on_a_file = replay("--render " + quoted(file));
+  EXPECT_EQ(on_a_file.exit_code, 1) << on_a_file.err;
+  EXPECT_THAT(on_a_file.err, HasSubstr("--render is an output folder, but it is a file"));
+  EXPECT_EQ(std::count(on_a_file.err.begin(), on_a_file.err.end(), '\n'), 1) << on_a_file.err;
+  EXPECT_EQ(test::read_file_text(file), "x");
   // The sequence itself is fine for this check: with a good --render the
   // empty folder is what fails, later.
   const test::CliResult good = replay("--render " + quoted(dir / "ar"));

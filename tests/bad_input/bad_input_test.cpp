@@ -2,7 +2,11 @@
 // runs it: every case gives its exit code, one line on stderr naming what
 // was wrong (never a hostile file's raw bytes), and leaves the outputs as
 // they were (absent, or an earlier run's folder untouched, and no hidden
-// temporary file or folder anywhere in the case's folder).
+// temporary file or folder anywhere in the case's folder). Issue 41's cases
+// (a careless command line must never destroy a user's files) run beside a
+// folder of the user's own files and a sequence of the user's, and every
+// file in the case's folder and in the shared inputs must be as it was
+// (except the one output a case may write).
 //
 // The raw files are in tests/bad_input/<parser>/ (README.md there); what
 // would be large (frames, a dataset, a flipped byte in the shipped model)
@@ -10,9 +14,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <sys/stat.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -20,6 +27,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "sequences/synth/label_classes.hpp"
 #include "tests/apps/cli_run.hpp"
 #include "tests/semantics/synthetic_facades.hpp"
 #include "tests/support/smooth_texture.hpp"
@@ -39,18 +47,23 @@ enum class Outputs {
 
 struct Case {
   const char* name;
-  const char* arguments;  // with {corpus} {case} {seq} {cam} {data} {out} {old} {file} placeholders
+  const char* arguments;  // with {corpus} {case} {seq} {cam} {data} {out} {old} {file} {mine} {myseq} placeholders
   int exit_code;
   const char* message;  // a substring of stderr (or, for exit 0, of stderr's warning)
   Outputs outputs = Outputs::absent;
   const char* stdout_message = "";  // a substring of stdout
+  const char* writes = "";          // the one path in the case's folder a run that succeeds may write
 };
 
 // Placeholders: {corpus} this folder in the source tree, {shared} the shared
 // generated inputs, {seq} a 3-frame TUM sequence (640x480), {cam} its
 // camera, {data} a tiny LabelMeFacade-layout dataset, {out} an output
 // folder that must stay absent, {old} an earlier replay's output folder,
-// {file} a regular file, {case} the case's own folder.
+// {file} a regular file, {case} the case's own folder, {mine} a folder of
+// the user's own files (notes.txt, thesis.tex, a report.json and a
+// synth.json that are plain text, a hand-made camera.yaml, a file named
+// old.fsmodel that is no model, photos/ with two PNGs, gt.txt), {myseq} a
+// copy of {seq} of the user's with a report.json in it.
 const Case kCases[] = {
     // rgb.txt lists
     {"rgb_txt_garbage_bytes", "replay {corpus}/rgb_txt/garbage_bytes.txt --camera {cam} --out {out}", 1,
@@ -83,7 +96,7 @@ const Case kCases[] = {
      Outputs::untouched},
     {"frames_corrupt_skipped_are_counted",
      "replay {shared}/zero_byte --camera {cam} --semantics off --sync --out {case}/counted", 3,
-     "never initialised", Outputs::absent, "1 corrupt frames skipped"},
+     "never initialised", Outputs::absent, "1 corrupt frames skipped", "counted"},
     // synth.json against what the folder holds (point 2)
     {"sequence_manifest_mismatch", "replay {shared}/mixed_manifest --semantics off --out {out}", 1,
      "synth.json: says 5 frames but"},
@@ -227,7 +240,7 @@ const Case kCases[] = {
     // Labels (LabelMeFacade layout)
     {"labels_missing_png", "evaluate labels --dataset {shared}/missing_label", 1, "labels"},
     {"labels_unknown_colour_warns", "evaluate labels --dataset {shared}/unknown_colour --json {case}/report.json", 0,
-     "lie on a label colour of no class"},
+     "lie on a label colour of no class", Outputs::absent, "", "report.json"},
     // The command line (point 6): exit code 2, one short line
     {"cli_stride_zero", "replay {seq} --stride 0 --out {out}", 2, "--stride"},
     {"cli_start_negative", "replay {seq} --start -5 --out {out}", 2, "--start"},
@@ -243,11 +256,11 @@ const Case kCases[] = {
     // Output locations checked before the work (point 1)
     {"out_replay_is_a_file", "replay {seq} --out {file}", 1, "it is a file"},
     {"out_replay_folder_of_other_files", "replay {seq} --semantics off --out {corpus}", 1,
-     "not an earlier replay output"},
+     "must be new, empty or an earlier replay output"},
     {"out_synth_is_a_file", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {file}", 1,
      "it is a file"},
     {"out_synth_folder_of_other_files", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {old}", 1,
-     "not an earlier synth output", Outputs::untouched},
+     "must be new, empty or an earlier synth output", Outputs::untouched},
     {"out_labels_json_is_a_folder", "evaluate labels --dataset {data} --json {case}", 1, "is a folder"},
     {"out_labels_confusion_unwritable",
      "evaluate labels --dataset {data} --confusion {file}/cm.png --model-out {out}/m.fsmodel", 1, "cm.png"},
@@ -260,6 +273,129 @@ const Case kCases[] = {
     {"out_train_unwritable", "train --dataset {data} --out {file}/m.fsmodel", 1, "m.fsmodel"},
     {"out_optimise_is_a_file", "optimise --dataset {data} --out {file}", 1, "it is a file"},
     {"optimise_seed_genome_short", "optimise --dataset {data} --seed-genome 0101 --out {out}", 2, "--seed-genome"},
+
+    // Issue 41: outputs never overwrite inputs or the user's files (point 1).
+    // replay/synth --out: a folder of the user's files, or one whose
+    // report.json / synth.json is plain text, is refused whole.
+    {"out_replay_folder_of_user_files", "replay {seq} --semantics off --out {mine}", 1, "--out holds '"},
+    {"out_replay_plain_text_report", "replay {seq} --semantics off --out {case}/plain-report", 1,
+     "'report.json', which is not a replay report"},
+    {"out_replay_into_its_sequence", "replay {myseq} --semantics off --out {myseq}", 1,
+     "--out is also the input SEQUENCE"},
+    {"out_replay_into_the_sequence_parent", "replay {myseq} --semantics off --out {case}", 1,
+     "--out holds the input SEQUENCE"},
+    {"out_synth_folder_of_user_files", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {mine}", 1,
+     "--out holds '"},
+    {"out_synth_plain_text_manifest", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {case}/plain-synth",
+     1, "'synth.json', which is not a synth manifest"},
+    // calibrate: --out a .yaml only, never a user's camera file, never among
+    // the images (its plot beside it would be read as an image next time).
+    {"out_calibrate_not_yaml", "calibrate --images {mine}/photos --out {mine}/thesis.tex", 1,
+     "expected a camera file name ending in .yaml"},
+    {"out_calibrate_user_camera_file", "calibrate --images {mine}/photos --out {mine}/camera.yaml", 1,
+     "not a camera YAML written by facadeslam calibrate"},
+    {"out_calibrate_plot_onto_an_image", "calibrate --images {mine}/photos --out {case}/c.yaml --plot {mine}/photos/a.png",
+     1, "--plot lies in --images"},
+    {"out_calibrate_json_onto_an_image", "calibrate --images {mine}/photos --out {case}/c.yaml --json {mine}/photos/b.png",
+     1, "--json lies in --images"},
+    {"out_calibrate_into_the_images", "calibrate --images {mine}/photos --out {mine}/photos/c.yaml", 1,
+     "--out lies in --images"},
+    {"out_calibrate_json_is_out", "calibrate --images {mine}/photos --out {case}/c.yaml --json {case}/c.yaml", 1,
+     "--json is the same path as --out"},
+    // replay --save-map: only a map, never an input, never another output.
+    {"out_save_map_over_a_user_file", "replay {seq} --semantics off --save-map {mine}/notes.txt --out {out}", 1,
+     "not a facadeslam map"},
+    {"out_save_map_over_the_rgb_txt", "replay {myseq} --semantics off --save-map {myseq}/rgb.txt --out {out}", 1,
+     "--save-map is also the input SEQUENCE's rgb.txt"},
+    {"out_save_map_is_the_report", "replay {seq} --semantics off --save-map {out}/report.json --out {out}", 1,
+     "--save-map is where --out puts a replay report"},
+    {"out_save_map_is_out", "replay {seq} --semantics off --save-map {out} --out {out}", 1,
+     "--save-map is the same path as --out"},
+    {"out_save_map_is_a_folder", "replay {seq} --semantics off --save-map {mine}/photos --out {out}", 1,
+     "--save-map is a folder"},
+    // evaluate: an output that is an input is refused (it was overwritten, exit 0).
+    {"out_trajectory_json_is_the_gt",
+     "evaluate trajectory --gt {mine}/gt.txt --est {corpus}/trajectory/good.txt --json {mine}/gt.txt", 1,
+     "--json is also the input --gt"},
+    {"out_labels_json_is_test_txt", "evaluate labels --dataset {data} --json {data}/test.txt", 1,
+     "--json is also the input --dataset's test.txt"},
+    {"out_labels_confusion_over_a_label_image",
+     "evaluate labels --dataset {data} --confusion {data}/labels/facade_0.png", 1,
+     "--confusion lies in --dataset's labels/"},
+    // --render outside --out is staged: a failed run leaves no render folder.
+    {"out_render_outside_out_is_staged",
+     "replay {shared}/mixed_size --camera {cam} --semantics off --render {case}/render --out {out}", 1,
+     "image is 320x240"},
+    {"out_render_folder_of_user_files", "replay {seq} --semantics off --render {mine} --out {out}", 1,
+     "--render holds '"},
+    {"out_optimise_among_user_files", "optimise --dataset {data} --out {mine}", 1, "--out holds '"},
+    {"out_train_over_a_file_that_is_no_model", "train --dataset {data} --out {mine}/old.fsmodel", 1,
+     "not a forest model"},
+    {"out_render_map_over_its_input", "render-map --map-ply {mine}/photos/a.png --out {mine}/photos/a.png", 1,
+     "--out is also the input --map-ply"},
+    {"out_invariance_json_over_a_user_file", "evaluate invariance --images {data}/images --json {mine}/report.json", 1,
+     "not an evaluate invariance report"},
+    // Options (point 5): counts and seeds in range, no empty paths, clear lines.
+    {"cli_out_empty_replay", "replay {seq} --out ''", 2, "--out: expected a path, got ''"},
+    {"cli_out_empty_synth", "synth --scene {root}/configs/scenes/demo.yaml --out ''", 2, "--out: expected a path"},
+    {"cli_out_empty_train", "train --dataset {data} --out ''", 2, "--out: expected a path"},
+    {"cli_out_empty_optimise", "optimise --dataset {data} --out ''", 2, "--out: expected a path"},
+    {"cli_out_empty_calibrate", "calibrate --images {mine}/photos --out ''", 2, "--out: expected a path"},
+    {"cli_save_map_empty", "replay {seq} --save-map '' --out {out}", 2, "--save-map: expected a path"},
+    {"cli_train_max_samples_negative", "train --dataset {data} --max-samples -1 --out {out}/m.fsmodel", 2,
+     "--max-samples: expected a whole number in [0, "},
+    {"cli_train_seed_negative", "train --dataset {data} --seed -1 --out {out}/m.fsmodel", 2,
+     "--seed: expected a whole number in [0, "},
+    {"cli_train_max_train_negative", "train --dataset {data} --max-train -3 --out {out}/m.fsmodel", 2,
+     "--max-train: expected a whole number"},
+    {"cli_labels_max_test_negative", "evaluate labels --dataset {data} --max-test -1", 2, "--max-test: expected"},
+    {"cli_labels_seed_negative", "evaluate labels --dataset {data} --seed -1", 2, "--seed: expected"},
+    {"cli_optimise_seed_negative", "optimise --dataset {data} --seed -1 --out {out}", 2, "--seed: expected"},
+    {"cli_invariance_max_images_negative", "evaluate invariance --images {data}/images --max-images -1", 2,
+     "--max-images: expected"},
+    {"cli_render_every_zero", "replay {seq} --render {out}/r --render-every 0 --out {out}", 2,
+     "--render-every: expected a whole number in [1, 1000000], got '0'"},
+    {"cli_unknown_command", "frobnicate --out {out}", 2,
+     "unknown command 'frobnicate' (expected one of: replay, evaluate"},
+    {"cli_unknown_evaluate_command", "evaluate trajectroy --gt {corpus}/trajectory/good.txt", 2,
+     "unknown evaluate command 'trajectroy' (expected one of: trajectory, labels, invariance)"},
+    {"cli_missing_evaluate_command", "evaluate", 2,
+     "missing evaluate command (expected one of: trajectory, labels, invariance)"},
+    {"rgb_txt_huge_line_is_not_echoed", "replay {shared}/huge_line.txt --camera {cam} --out {out}", 1,
+     "...' (1048576 bytes) is not a timestamp"},
+    {"rgb_txt_fifo_image", "replay {shared}/fifo_list/rgb.txt --camera {cam} --out {out}", 1,
+     "fifo.png is a FIFO (named pipe)"},
+    // A FIFO named as an input is refused before it is opened (a reader
+    // would wait forever on it).
+    {"camera_is_a_fifo", "replay {seq} --camera {shared}/fifo_list/fifo.png --out {out}", 1,
+     "fifo.png: is a FIFO (named pipe) (expected a camera YAML file)"},
+    {"trajectory_gt_is_a_fifo",
+     "evaluate trajectory --gt {shared}/fifo_list/fifo.png --est {corpus}/trajectory/good.txt", 1,
+     "fifo.png: is a FIFO (named pipe) (expected a trajectory file)"},
+    // Inputs confined to their folder (point 4).
+    {"rgb_txt_outside_absolute", "replay {corpus}/rgb_txt/outside_absolute.txt --camera {cam} --out {out}", 1,
+     "line 1: '/etc/passwd' leads outside"},
+    {"rgb_txt_outside_relative", "replay {corpus}/rgb_txt/outside_relative.txt --camera {cam} --out {out}", 1,
+     "leads outside"},
+    {"rgb_txt_outside_frames", "replay {corpus}/rgb_txt/sub/outside_frames.txt --camera {cam} --out {out}", 1,
+     "'../frames/a.png' leads outside"},
+    // ... read on purpose: the frames are then read (and are placeholders).
+    {"rgb_txt_outside_frames_allowed",
+     "--allow-outside-paths replay {corpus}/rgb_txt/sub/outside_frames.txt --camera {cam} --on-corrupt stop --out {out}",
+     1, "frames/a.png"},
+    {"scene_camera_not_yaml", "synth --scene {corpus}/scene_yaml/camera_outside.yaml --out {out}", 1,
+     "key 'camera': expected a camera YAML file (.yaml or .yml; pass --allow-outside-paths to read it anyway)"},
+    {"scene_photo_outside", "synth --scene {corpus}/scene_yaml/photo_outside.yaml --out {out}", 1,
+     "expected a path inside the photos folder"},
+    {"scene_photo_not_an_image", "synth --scene {corpus}/scene_yaml/photo_not_an_image.yaml --out {out}", 1,
+     "expected an image file (.jpg"},
+    {"dataset_train_txt_outside", "train --dataset {shared}/outside_names --out {out}/m.fsmodel", 1,
+     "train.txt: line 2: '../../../../../../../../etc/hostname' leads outside"},
+    {"dataset_test_txt_outside", "evaluate labels --dataset {shared}/outside_names --model {root}/models/default.fsmodel",
+     1, "test.txt: line 1: '/etc/hostname' leads outside"},
+    // --gt-labels missing a later frame fails before the first frame.
+    {"gt_labels_missing_a_later_frame", "replay {seq} --semantics off --gt-labels {shared}/labels_missing_last --out {out}",
+     1, "the ground-truth label image of frame 000002.png does not exist"},
 };
 
 
@@ -316,6 +452,20 @@ class Shared {
       fs::remove(entry.path());
       break;
     }
+    // Names in train.txt / test.txt leading out of the dataset.
+    semantics::test_util::write_synthetic_dataset(root() / "outside_names", 3, 2);
+    write_bytes(root() / "outside_names" / "train.txt", "facade_0\n../../../../../../../../etc/hostname\n");
+    write_bytes(root() / "outside_names" / "test.txt", "/etc/hostname\n");
+    // Labels for the first two of {seq}'s three frames only.
+    fs::create_directories(root() / "labels_missing_last");
+    for (int i = 0; i < 2; ++i)
+      cv::imwrite((root() / "labels_missing_last" / frame_name(i)).string(),
+                  synth::colours_from_label_ids(cv::Mat(480, 640, CV_8UC1, cv::Scalar(1))));
+    // A list whose first line is 1 MB; a list naming a FIFO.
+    write_bytes(root() / "huge_line.txt", std::string(1 << 20, '7') + " rgb/000000.png\n");
+    fs::create_directories(root() / "fifo_list");
+    ::mkfifo((root() / "fifo_list" / "fifo.png").c_str(), 0600);
+    write_bytes(root() / "fifo_list" / "rgb.txt", "0.0 fifo.png\n");
     semantics::test_util::write_synthetic_dataset(root() / "unknown_colour", 3, 2);
     for (const auto& entry : fs::directory_iterator(root() / "unknown_colour" / "labels")) {
       cv::Mat label = cv::imread(entry.path().string(), cv::IMREAD_COLOR);
@@ -347,13 +497,67 @@ std::string expand(std::string text, const std::map<std::string, fs::path>& plac
   return text;
 }
 
-// Every file below `folder` with its content.
+// Every file below `folder` with its size and a hash of its content (a
+// failure lists the files, not their bytes).
 std::map<std::string, std::string> snapshot(const fs::path& folder) {
   std::map<std::string, std::string> files;
-  for (const auto& entry : fs::recursive_directory_iterator(folder))
-    files[fs::relative(entry.path(), folder).string()] =
-        entry.is_regular_file() ? test::read_file_text(entry.path()) : std::string("<folder>");
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    std::string what = "<folder>";
+    if (entry.is_regular_file()) {
+      const std::string content = test::read_file_text(entry.path());
+      what = std::to_string(content.size()) + " bytes, hash " + std::to_string(std::hash<std::string>{}(content));
+    }
+    files[fs::relative(entry.path(), folder).string()] = what;
+  }
   return files;
+}
+
+// Every file below `folder` with its size and modification time: cheap
+// enough to take of the shared inputs around every case.
+std::map<std::string, std::string> signature(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    const fs::file_status status = entry.symlink_status();
+    std::string what = std::to_string(static_cast<int>(status.type()));
+    if (fs::is_regular_file(status))
+      what.append(" ").append(std::to_string(entry.file_size())).append(" ").append(
+          std::to_string(entry.last_write_time().time_since_epoch().count()));
+    files[fs::relative(entry.path(), folder).string()] = what;
+  }
+  return files;
+}
+
+// The files of `snapshot` outside `scratch` and outside `allowed` (empty: none).
+std::map<std::string, std::string> outside(std::map<std::string, std::string> files, const std::string& allowed) {
+  for (auto it = files.begin(); it != files.end();) {
+    const std::string& name = it->first;
+    const auto below = [&](const std::string& folder) {
+      return !folder.empty() && (name == folder || name.compare(0, folder.size() + 1, folder + "/") == 0);
+    };
+    it = below("scratch") || below(allowed) ? files.erase(it) : std::next(it);
+  }
+  return files;
+}
+
+// The user's own files a careless command line must not touch.
+void write_user_files(const fs::path& dir, const std::string& arguments) {
+  const fs::path mine = dir / "mine";
+  test::write_text(mine / "notes.txt", "my notes\n");
+  test::write_text(mine / "thesis.tex", "\\documentclass{article}\n");
+  test::write_text(mine / "report.json", "my report, in plain text\n");
+  test::write_text(mine / "synth.json", "my synth notes\n");
+  test::write_text(mine / "camera.yaml", "# my own camera, measured by hand\nmodel: pinhole\nfx: 500\n");
+  test::write_text(mine / "old.fsmodel", "not a model\n");
+  fs::copy_file(test::source_dir() / "tests" / "bad_input" / "trajectory" / "good.txt", mine / "gt.txt");
+  fs::create_directories(mine / "photos");
+  cv::imwrite((mine / "photos" / "a.png").string(), test::smooth_random_texture(64, 48, 3));
+  cv::imwrite((mine / "photos" / "b.png").string(), test::smooth_random_texture(64, 48, 4));
+  test::write_text(dir / "plain-report" / "report.json", "my own notes, not a replay's\n");
+  test::write_text(dir / "plain-synth" / "synth.json", "my own notes, not synth's\n");
+  if (arguments.find("{myseq}") != std::string::npos) {
+    fs::copy(g_shared->root() / "seq", dir / "myseq", fs::copy_options::recursive);
+    test::write_text(dir / "myseq" / "report.json", "{\"mine\": true}\n");
+  }
 }
 
 TEST_P(BadInput, FailsWithOneClearLineAndLeavesTheOutputs) {
@@ -363,9 +567,14 @@ TEST_P(BadInput, FailsWithOneClearLineAndLeavesTheOutputs) {
   fs::create_directories(scratch);
   test::write_text(dir / "a-file", "not a folder\n");
   fs::create_directories(old);
-  test::write_text(old / "report.json", "{\"old\": true}\n");
+  // An earlier replay's output as the output policy recognises it (core/util/output_policy.hpp).
+  test::write_text(old / "report.json", "{\"sequence\": \"old\", \"camera\": \"c.yaml\", \"mode\": \"synchronous\", "
+                                        "\"frames\": 3, \"initialised\": false}\n");
   test::write_text(old / "trajectory.txt", "0 0 0 0 0 0 0 1\n");
   const auto before = snapshot(old);
+  write_user_files(dir.path(), c.arguments);
+  const auto case_before = snapshot(dir.path());
+  const auto shared_before = signature(g_shared->root());
   const fs::path corpus = test::source_dir() / "tests" / "bad_input";
   const std::map<std::string, fs::path> places = {
       {"{corpus}", corpus},
@@ -378,6 +587,8 @@ TEST_P(BadInput, FailsWithOneClearLineAndLeavesTheOutputs) {
       {"{old}", old},
       {"{file}", dir / "a-file"},
       {"{case}", dir.path()},
+      {"{mine}", dir / "mine"},
+      {"{myseq}", dir / "myseq"},
   };
   // -q: only warnings and errors on stderr.
   std::string arguments = "-q ";
@@ -400,6 +611,11 @@ TEST_P(BadInput, FailsWithOneClearLineAndLeavesTheOutputs) {
   if (c.outputs == Outputs::untouched) {
     EXPECT_EQ(snapshot(old), before) << "the earlier output folder was changed";
   }
+  // Nothing else in the case's folder (the user's files, sequence, images)
+  // or in the shared inputs changed.
+  EXPECT_EQ(outside(snapshot(dir.path()), c.writes), outside(case_before, c.writes))
+      << "a file outside the case's output was changed, made or removed";
+  EXPECT_EQ(signature(g_shared->root()), shared_before) << "a shared input was changed";
   // No hidden temporary file or folder anywhere (staging folders, .tmp files).
   for (const auto& entry : fs::recursive_directory_iterator(dir.path()))
     EXPECT_NE(entry.path().filename().string().front(), '.') << "left behind: " << entry.path();

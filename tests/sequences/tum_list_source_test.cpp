@@ -5,7 +5,9 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include "core/util/input_confinement.hpp"
 #include "tests/sequences/sequence_test_files.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -168,6 +170,38 @@ TEST(TumListSource, ImageOfAnotherSizeNamesItAndBothSizes) {
   EXPECT_THAT(error_of([&] { source.next(); }),
               AllOf(HasSubstr((dir / "rgb/b.png").string()), HasSubstr("16x12"),
                     HasSubstr("32x24")));
+}
+
+// Issue 41: listed paths stay inside the list's folder unless allowed.
+TEST(TumListSource, ListedPathsLeadingOutOfTheFolderAreRefused) {
+  test::TempDir dir;
+  write_list(dir, {1});
+  test::write_marked_image(dir / "outside.png", 2);
+  fs::create_directories(dir / "seq");
+  test::write_text(dir / "seq" / "rgb.txt", "1.0 ../rgb/1.png\n2.0 ../outside.png\n");
+  EXPECT_THAT(error_of([&] { TumListSource source(dir / "seq" / "rgb.txt", {}); }),
+              AllOf(HasSubstr((dir / "seq" / "rgb.txt").string() + ": line 1: '../rgb/1.png' leads outside"),
+                    HasSubstr("--allow-outside-paths")));
+  test::write_text(dir / "seq" / "rgb.txt", "1.0 /etc/passwd\n");
+  EXPECT_THAT(error_of([&] { TumListSource source(dir / "seq" / "rgb.txt", {}); }),
+              HasSubstr("'/etc/passwd' leads outside"));
+  allow_paths_outside_inputs(true);
+  test::write_text(dir / "seq" / "rgb.txt", "1.0 ../rgb/1.png\n2.0 ../outside.png\n");
+  TumListSource source(dir / "seq" / "rgb.txt", {});
+  EXPECT_EQ(read_all(source).size(), 2u);
+  allow_paths_outside_inputs(false);
+}
+
+TEST(TumListSource, AListedPathThatIsNoFileSaysWhatItIs) {
+  test::TempDir dir;
+  write_list(dir, {1});
+  fs::create_directories(dir / "rgb" / "folder.png");
+  ASSERT_EQ(::mkfifo((dir / "rgb" / "fifo.png").c_str(), 0600), 0);
+  test::write_text(dir / "rgb.txt", "1.0 rgb/1.png\n2.0 rgb/fifo.png\n");
+  EXPECT_THAT(error_of([&] { TumListSource source(dir / "rgb.txt", {}); }),
+              AllOf(HasSubstr("line 2"), HasSubstr("fifo.png is a FIFO (named pipe)")));
+  test::write_text(dir / "rgb.txt", "1.0 rgb/1.png\n2.0 rgb/folder.png\n");
+  EXPECT_THAT(error_of([&] { TumListSource source(dir / "rgb.txt", {}); }), HasSubstr("folder.png is a folder"));
 }
 
 }  // namespace

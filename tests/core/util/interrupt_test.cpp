@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <sys/wait.h>
@@ -87,6 +88,56 @@ TEST(InterruptDeathTest, MoreFilesThanSlotsAreStillWrittenTheLastOnesUnregistere
       ended_by_the_signal, "");
   for (int i = 0; i < kAbortCleanupFiles; ++i) EXPECT_FALSE(fs::exists(dir / ("f" + std::to_string(i)))) << i;
   EXPECT_TRUE(fs::exists(dir / ("f" + std::to_string(kAbortCleanupFiles))));
+}
+
+// SIGTERM and SIGHUP (the terminal closed) are handled like Ctrl-C, each
+// with its own exit code.
+TEST(Interrupt, EachSignalGivesItsOwnExitCode) {
+  for (const auto& [signal, code] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}, std::pair{SIGHUP, 129}}) {
+    const InterruptGuard guard;
+    EXPECT_EQ(interrupt_exit_code(), kExitInterrupted) << "none yet";
+    std::raise(signal);
+    EXPECT_TRUE(interrupt_requested()) << signal;
+    EXPECT_EQ(interrupt_exit_code(), code) << signal;
+  }
+}
+
+bool exited_with(int status, int code) { return WIFEXITED(status) && WEXITSTATUS(status) == code; }
+
+TEST(InterruptDeathTest, EndAtOnceEndsAtTheFirstSignalRemovingWhatIsBeingWritten) {
+  test::TempDir dir;
+  const fs::path writing = dir / ".model.tmp1_0.fsmodel", staged = dir / ".out.tmp-1";
+  EXPECT_EXIT(
+      {
+        touch(writing);
+        fs::create_directories(staged / "frames");
+        touch(staged / "frames" / "a.png");
+        const InterruptGuard guard(InterruptResponse::end_at_once);
+        const AbortCleanupFile file(writing);
+        const AbortCleanupFile folder(staged);  // a folder, removed with what it holds
+        std::raise(SIGHUP);
+        std::_Exit(0);
+      },
+      [](int status) { return exited_with(status, 129); }, "");
+  EXPECT_FALSE(fs::exists(writing));
+  EXPECT_FALSE(fs::exists(staged));
+}
+
+TEST(InterruptDeathTest, ASignalWhileOutputsAreMovedInPlaceWaitsForThem) {
+  test::TempDir dir;
+  const fs::path finished = dir / "model.fsmodel";
+  EXPECT_EXIT(
+      {
+        const InterruptGuard guard(InterruptResponse::end_at_once);
+        {
+          const AbortDeferral both_or_neither;
+          std::raise(SIGTERM);
+          touch(finished);  // still runs: the signal waits
+        }
+        std::_Exit(0);
+      },
+      [](int status) { return exited_with(status, 143); }, "");
+  EXPECT_TRUE(fs::exists(finished));
 }
 
 }  // namespace

@@ -2,6 +2,10 @@
 
 #include <fstream>
 #include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -83,6 +87,57 @@ TEST(StagedFolder, AFileInTheWayIsAnError) {
   test::TempDir dir;
   write(dir / "file", "x");
   EXPECT_THROW(StagedFolder(dir / "file"), Error);
+}
+
+// A run that continues an earlier one (optimise --resume) starts from the
+// target's files, and from the staging folder a killed run left when that
+// one got further; the target stays as it was until the commit.
+TEST(StagedFolder, ARunThatContinuesStartsFromTheTargetsFiles) {
+  test::TempDir dir;
+  const fs::path target = dir / "run";
+  fs::create_directories(target / "sub");
+  write(target / "generation-000.json", "0");
+  write(target / "sub" / "a.txt", "a");
+  {
+    StagedFolder staged(target, {true, {}});
+    EXPECT_EQ(read(staged.path() / "generation-000.json"), "0");
+    EXPECT_EQ(read(staged.path() / "sub" / "a.txt"), "a");
+    write(staged.path() / "generation-001.json.tmp", "1");
+    fs::rename(staged.path() / "generation-001.json.tmp", staged.path() / "generation-001.json");
+    EXPECT_FALSE(fs::exists(target / "generation-001.json"));
+    staged.commit();
+  }
+  EXPECT_EQ(read(target / "generation-000.json"), "0");
+  EXPECT_EQ(read(target / "generation-001.json"), "1");
+}
+
+TEST(StagedFolder, ARunThatContinuesTakesOverAKilledRunsFurtherStagingFolder) {
+  test::TempDir dir;
+  const fs::path target = dir / "run";
+  fs::create_directories(target);
+  write(target / "generation-000.json", "0");
+  // The staging folder of a process that is gone (killed with SIGKILL).
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  const fs::path abandoned = dir / (".run.tmp-" + std::to_string(child));
+  fs::create_directories(abandoned);
+  for (const char* name : {"generation-000.json", "generation-001.json", "generation-002.json"})
+    write(abandoned / name, name);
+  const auto further_on = [](const fs::path& a, const fs::path& than) { return entries(a) > entries(than); };
+  {
+    StagedFolder staged(target, {true, further_on});
+    EXPECT_TRUE(fs::exists(staged.path() / "generation-002.json"));
+    EXPECT_FALSE(fs::exists(abandoned)) << "its files live on in the new staging folder";
+    EXPECT_EQ(read(target / "generation-000.json"), "0") << "the target untouched until the commit";
+    staged.commit();
+  }
+  EXPECT_EQ(entries(target), 3u);
+  // A run that starts anew removes such folders instead.
+  fs::create_directories(abandoned);
+  { StagedFolder fresh(target); }
+  EXPECT_FALSE(fs::exists(abandoned));
 }
 
 }  // namespace
