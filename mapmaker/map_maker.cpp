@@ -141,8 +141,11 @@ std::vector<std::shared_ptr<KeyFrame>> MapMaker::epipolar_partners(const KeyFram
   if (!near) return {};
   std::vector<std::shared_ptr<KeyFrame>> partners{others[*near]};
   if (!moving_forward(keyframe.T_c_w(), poses[*near], options_.epipolar_partner)) return partners;
+  // Forward over the far partner's longer baseline too: a hand-held camera's
+  // shake can make one short step look forward on a walk that is not.
   if (const auto far = choose_far_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, near,
-                                                   options_.epipolar_partner))
+                                                   options_.epipolar_partner);
+      far && moving_forward(keyframe.T_c_w(), poses[*far], options_.epipolar_partner))
     partners.push_back(others[*far]);
   return partners;
 }
