@@ -229,11 +229,12 @@ void System::log_tracking(const FrameReport& report) const {
   spdlog::debug(
       "frame {}: {} ({}), coarse {}/{}, fine {}/{} of {} projected ({} in view, {} bad warp, {} dropped; "
       "no template {}, no corner {}, zmssd {}, sub-pixel {}, outliers {}), rms {:.2f} px, "
-      "predicted within {:.2f} deg {:.3f}, {:.2f}+{:.2f}+{:.2f}+{:.2f} ms{}",
+      "predicted within {:.2f} deg {:.3f}, {:.2f}+{:.2f}+{:.2f}+{:.2f} ms{}{}",
       report.index, to_string(report.status), to_string(t.quality), t.coarse_found, t.coarse_searched, t.fine_found,
-      t.fine_searched, c.projected, c.in_view, c.bad_warp, t.points_dropped, c.template_invalid, c.no_candidate, c.score_too_high, c.subpixel_failed,
-      c.outliers, t.inlier_rms_px, t.prediction_error_deg, t.prediction_error_m, report.pyramid_ms, t.timings.coarse_ms, t.timings.fine_ms, t.timings.pose_ms,
-      t.keyframe_requested ? ", keyframe requested" : "");
+      t.fine_searched, c.projected, c.in_view, c.bad_warp, t.points_dropped, c.template_invalid, c.no_candidate,
+      c.score_too_high, c.subpixel_failed, c.outliers, t.inlier_rms_px, t.prediction_error_deg, t.prediction_error_m,
+      report.pyramid_ms, t.timings.coarse_ms, t.timings.fine_ms, t.timings.pose_ms,
+      t.coarse_pose_rejected ? ", coarse pose rejected" : "", t.keyframe_requested ? ", keyframe requested" : "");
 }
 
 void System::finish() {

@@ -352,14 +352,17 @@ TrackingResult Tracker::track(const Frame& frame) {
   TrackingResult result;
   const SE3d predicted = SE3d::exp(options_.velocity_decay * velocity_) * T_c_w_;
   auto inliers = track_from(predicted, frame, result);
+  // A bad frame, or one whose points sit far from where the pose puts them.
+  const auto doubtful = [&](const TrackingResult& r) {
+    return r.quality == TrackingQuality::bad || r.inlier_rms_px > options_.max_good_rms_px;
+  };
   // A coarse stage of a dozen points over a wide radius can lock on to wrong
   // matches and pull the pose degrees away (kitti00-300 leaving its second
   // turn: 10 of 19 coarse points "found", the pose 3.9 degrees off a
   // prediction that was right to 0.2, and every fine search failing from
   // there): when the fine stage fails from the coarse pose, it is tried
   // again from the prediction, and the better of the two is kept.
-  if (options_.retry_from_prediction && result.coarse_pose_used && (result.quality == TrackingQuality::bad ||
-                                  result.inlier_rms_px > options_.max_good_rms_px)) {
+  if (options_.retry_from_prediction && result.coarse_pose_used && doubtful(result)) {
     TrackingResult from_prediction;
     auto inliers_from_prediction = track_from(predicted, frame, from_prediction, false);
     if (better_than(from_prediction, result)) {
@@ -376,11 +379,9 @@ TrackingResult Tracker::track(const Frame& frame) {
   const SE3d correction = result.T_c_w * predicted.inverse();
   result.prediction_error_deg = rad_to_deg(correction.so3().log().norm());
   result.prediction_error_m = (result.T_c_w.inverse().translation() - predicted.inverse().translation()).norm();
-  // A first bad frame, or one whose points sit far from where the pose puts
-  // them: perhaps the view jumped, and a relocalised pose that tracks well
-  // is worth its time.
-  const bool doubtful = result.quality == TrackingQuality::bad || result.inlier_rms_px > options_.max_good_rms_px;
-  if (doubtful && lost_frames_ == 0 && options_.relocalise_on_first_bad_frame)
+  // A first doubtful frame: perhaps the view jumped, and a relocalised pose
+  // that tracks well is worth its time.
+  if (doubtful(result) && lost_frames_ == 0 && options_.relocalise_on_first_bad_frame)
     if (auto found = relocalise(frame)) return relocalised(std::move(*found));
   if (result.quality == TrackingQuality::bad) {
     // PTAM: the next few frames are still tracked from the motion model (a

@@ -33,7 +33,7 @@ void check_replay_paths(const ReplayPaths& p) {
   // Inputs that are there but are no readable file (a FIFO would block).
   require_readable_if_present(p.camera, "a camera YAML file");
   require_readable_if_present(p.config, "a SLAM settings YAML file");
-  require_readable_if_present(p.gt, "a ground-truth TUM trajectory");
+  require_readable_if_present(p.gt, "a ground-truth trajectory (TUM or KITTI)");
   require_readable_if_present(p.load_map, "a map file (.fslmap)");
   require_readable_if_present(p.model, "a forest model (.fsmodel)");
   require_readable_if_present(p.grey_model, "a forest model (.fsmodel)");

@@ -24,16 +24,21 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 using test::error_of;
 
+// The process id a lock file names (0 when it names none).
+long pid_in(const fs::path& lock_file) {
+  std::ifstream in(lock_file);
+  long pid = 0;
+  in >> pid;
+  return pid;
+}
+
 TEST(OutputLock, IsAFileBesideTheTargetRemovedWhenReleased) {
   test::TempDir dir;
   EXPECT_EQ(output_lock_file(dir / "out"), dir / ".out.lock");
   EXPECT_EQ(output_lock_file(dir / "out" / ""), dir / ".out.lock");
   {
     const OutputLock lock(dir / "out");
-    std::ifstream in(dir / ".out.lock");
-    long pid = 0;
-    in >> pid;
-    EXPECT_EQ(pid, ::getpid());
+    EXPECT_EQ(pid_in(dir / ".out.lock"), ::getpid());
   }
   EXPECT_FALSE(fs::exists(dir / ".out.lock"));
 }
@@ -67,10 +72,7 @@ TEST(OutputLock, TheLockOfAProcessThatDiedIsTakenOver) {
   ASSERT_TRUE(fs::exists(dir / ".out.lock")) << "a killed holder leaves its file";
   {
     const OutputLock lock(dir / "out");
-    std::ifstream in(dir / ".out.lock");
-    long pid = 0;
-    in >> pid;
-    EXPECT_EQ(pid, ::getpid());
+    EXPECT_EQ(pid_in(dir / ".out.lock"), ::getpid());
   }
   EXPECT_FALSE(fs::exists(dir / ".out.lock"));
 }
