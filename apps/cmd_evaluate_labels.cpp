@@ -71,15 +71,6 @@ void print_summary(const semantics::LabelEvaluation& r) {
     std::printf("  extraction %.1f ms/image, forest %.1f ms/image, total %.1f s\n", r.extraction_ms_per_image(),
                 r.forest_ms_per_image(), r.total_seconds);
   std::fflush(stdout);
-  // Pixels of a colour that is no class colour (a label PNG from another
-  // palette, anti-aliased edges) are left out: said, and counted in the
-  // report as unlabelled_keypoints.
-  if (r.unlabelled_keypoints > 0) {
-    const std::size_t grid = r.train_keypoints + r.test_keypoints + r.unlabelled_keypoints;
-    spdlog::warn("{} of {} grid keypoints ({:.1f} %) lie on a label colour of no class and were left out "
-                 "(unlabelled_keypoints in the report)",
-                 r.unlabelled_keypoints, grid, 100.0 * static_cast<double>(r.unlabelled_keypoints) / static_cast<double>(grid));
-  }
 }
 
 // With several descriptors each gets its own confusion PNG: NAME_<descriptor>.png.

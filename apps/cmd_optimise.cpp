@@ -19,6 +19,7 @@
 #include "apps/output_kinds.hpp"
 #include "core/util/error.hpp"
 #include "core/util/path_checks.hpp"
+#include "core/util/shipped_files.hpp"
 #include "core/util/interrupt.hpp"
 #include "core/util/output_policy.hpp"
 #include "core/util/staged_folder.hpp"
@@ -152,6 +153,7 @@ void run(Options& o) {
   cv::setNumThreads(1);
   // The run folder can be made (or is one) before any work, and is a new
   // or empty folder or an earlier run's, never one of other files.
+  if (!o.config_given) o.config = shipped_file(o.config);  // beside the executable, not the current folder
   OutputPlan plan;
   plan.input(o.run.dataset / "train.txt", "--dataset's train.txt");
   plan.input(o.run.dataset / "test.txt", "--dataset's test.txt");
@@ -218,7 +220,7 @@ void add_optimise_command(CLI::App& app) {
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   cmd->add_flag("--resume", r.resume, "Continue the run in --out from its newest generation-NNN.json");
-  cmd->add_option("--config", options->config, "GA settings YAML (default: configs/optimise.yaml when present)")
+  cmd->add_option("--config", options->config, "GA settings YAML (default: the shipped configs/optimise.yaml)")
       ->each([options](const std::string&) { options->config_given = true; });
   cmd->add_option("--seed-genome", options->seed_genomes,
                   "A genome (file or 0/1 string) for the first generation beside the thesis genome; repeatable");

@@ -27,6 +27,7 @@
 #include "core/util/interrupt.hpp"
 #include "core/util/progress.hpp"
 #include "core/util/staged_folder.hpp"
+#include "core/util/shipped_files.hpp"
 #include "core/util/stopwatch.hpp"
 #include "semantics/evaluation/map_label_accuracy.hpp"
 #include "sequences/open_sequence.hpp"
@@ -39,13 +40,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The embedded demo, rendered at set-up (scripts/make-demo).
+// The embedded demo (rendered at set-up: scripts/make-demo), the shipped
+// forests (models/README.md) and the semantic settings, found beside the
+// executable wherever it is run from (core/util/shipped_files.hpp).
 const fs::path kDemoSequence = "data/demo/sequence";
 const fs::path kDefaultOutput = "facadeslam-out";
-// The shipped forest (models/README.md) and the semantic settings, relative
-// to the project root.
-const fs::path kDefaultModel = "models/default.fsmodel";
-const fs::path kDefaultGreyModel = "models/grey.fsmodel";
 const fs::path kDefaultSemanticsConfig = "configs/semantics.yaml";
 
 struct ReplayOptions {
@@ -66,22 +65,23 @@ struct ReplayOptions {
 SemanticsOptions semantics_options(const ReplayOptions& o) {
   SemanticsOptions semantics;
   semantics.enabled = true;
-  semantics.model = kDefaultModel;
-  semantics.grey_model = kDefaultGreyModel;
-  if (!o.semantics_config.empty())
+  const fs::path shipped_config = shipped_file(kDefaultSemanticsConfig);
+  const bool user_config = !o.semantics_config.empty();
+  if (user_config)
     semantics = load_semantics_options(o.semantics_config, semantics);
-  else if (path_exists(kDefaultSemanticsConfig))
-    semantics = load_semantics_options(kDefaultSemanticsConfig, semantics);
+  else if (path_exists(shipped_config))
+    semantics = load_semantics_options(shipped_config, semantics);
   if (!o.semantics.empty()) semantics.enabled = o.semantics == "on";
   if (!o.model.empty()) semantics.model = o.model;
   if (!o.grey_model.empty()) semantics.grey_model = o.grey_model;
   if (!semantics.enabled) return semantics;
-  // Run from elsewhere, the shipped grey model is not found: grey sequences
-  // then stay unlabelled (said at the end of the run), colour ones are as usual.
-  if (o.grey_model.empty() && semantics.grey_model == kDefaultGreyModel && !path_exists(semantics.grey_model))
-    semantics.grey_model.clear();
-  if (o.model.empty() && semantics.model == kDefaultModel && !path_exists(semantics.model)) {
-    spdlog::warn("no model at {} (run from the project folder, or pass --model): semantics off", kDefaultModel.string());
+  // A copy of the program without its models/ folder: grey sequences stay
+  // unlabelled (said at the end of the run), and with no colour model the
+  // semantics are off; models the user names must exist.
+  if (o.grey_model.empty() && !user_config && !path_exists(semantics.grey_model)) semantics.grey_model.clear();
+  if (o.model.empty() && !user_config && !path_exists(semantics.model)) {
+    spdlog::warn("no model at {} (pass --model): semantics off",
+                 semantics.model.empty() ? shipped_config.string() : semantics.model.string());
     semantics.enabled = false;
   }
   return semantics;
@@ -89,7 +89,7 @@ SemanticsOptions semantics_options(const ReplayOptions& o) {
 
 int run_replay(ReplayOptions o) {
   if (o.sequence.empty()) {
-    o.sequence = kDemoSequence;
+    o.sequence = shipped_file(kDemoSequence);
     if (!path_exists(o.sequence))
       throw Error(o.sequence.string() + ": the embedded demo is not rendered yet (run scripts/make-demo, or pass a SEQUENCE)");
     if (o.gt.empty() && path_exists(o.sequence / "groundtruth.txt")) o.gt = o.sequence / "groundtruth.txt";

@@ -47,10 +47,12 @@ void run(Options& o) {
   // The model and its summary replace only an earlier model and summary,
   // never an input (the genome, the dataset's lists): output_policy.hpp.
   OutputPlan plan;
-  plan.input(o.training.dataset / "train.txt", "--dataset's train.txt");
-  plan.input(o.training.dataset / "test.txt", "--dataset's test.txt");
-  plan.input_folder_read_whole(o.training.dataset / "images", "--dataset's images/");
-  plan.input_folder_read_whole(o.training.dataset / "labels", "--dataset's labels/");
+  for (const std::filesystem::path& dataset : o.training.datasets) {
+    plan.input(dataset / "train.txt", "--dataset's train.txt");
+    plan.input(dataset / "test.txt", "--dataset's test.txt");
+    plan.input_folder_read_whole(dataset / "images", "--dataset's images/");
+    plan.input_folder_read_whole(dataset / "labels", "--dataset's labels/");
+  }
   if (is_existing_file(o.genome)) plan.input(o.genome, "--genome");
   plan.output_file(o.out, "--out", model_file_kind());
   plan.output_file(summary, "the summary (--out's NAME.fsmodel.json)", training_summary_kind());
@@ -89,7 +91,9 @@ void add_train_command(CLI::App& app) {
   auto& t = options->training;
   auto* cmd = app.add_subcommand(
       "train", "Train the random forest of a genome on a LabelMeFacade-style dataset's train.txt and write the model");
-  cmd->add_option("--dataset", t.dataset, "Dataset folder: train.txt, images/, labels/ (test.txt is never read)")
+  cmd->add_option("--dataset", t.datasets,
+                  "Dataset folder: train.txt, images/, labels/ (test.txt is never read); repeat it to train on "
+                  "several datasets' train.txt together")
       ->required();
   cmd->add_option("--genome", options->genome,
                   "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the "

@@ -127,8 +127,14 @@ ClassSet read_classes(const ConfigNode& node, const std::string& key, ClassSet f
 SemanticsOptions load_semantics_options(const std::filesystem::path& path, SemanticsOptions options) {
   const ConfigNode root = ConfigNode::load_file(path);
   options.enabled = root.get_bool("enabled", options.enabled);
-  if (root.has("model")) options.model = root.get_string("model");
-  if (root.has("grey_model")) options.grey_model = root.get_string("grey_model");
+  // A model named in the file is relative to the file's folder, not to
+  // wherever the program is run from ("" stays empty: no grey model).
+  const auto beside_config = [&](const std::string& name) {
+    const std::filesystem::path model = name;
+    return model.empty() || model.is_absolute() ? model : path.parent_path() / model;
+  };
+  if (root.has("model")) options.model = beside_config(root.get_string("model"));
+  if (root.has("grey_model")) options.grey_model = beside_config(root.get_string("grey_model"));
   if (const auto prior = root.optional_child("class_prior")) {
     for (const SemanticClass& c : kSemanticClasses)
       options.class_prior[c.id] = static_cast<float>(prior->get_double(std::string(c.name), Range::positive()));

@@ -105,7 +105,7 @@ std::vector<std::string> evaluation_class_names() {
 LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
   const Stopwatch start;
   TrainingOptions training;
-  training.dataset = options.dataset;
+  training.datasets = {options.dataset};
   training.descriptor = options.descriptor;
   training.genome = options.genome;
   training.step = options.step;

@@ -1,5 +1,6 @@
 #include "semantics/evaluation/label_image.hpp"
 
+#include <string>
 #include <system_error>
 
 #include <opencv2/imgcodecs.hpp>
@@ -15,6 +16,18 @@ std::uint8_t class_of_colour(const cv::Vec3b& bgr) {
   return id ? *id : kUnknownClass;
 }
 
+namespace {
+
+// "various (0,0,0), building (128,0,0), ...": the colours a label image may hold.
+std::string class_colour_list() {
+  std::string list;
+  for (const SemanticClass& c : kSemanticClasses)
+    list += cat(list.empty() ? "" : ", ", c.name, " (", int{c.r}, ",", int{c.g}, ",", int{c.b}, ")");
+  return list;
+}
+
+}  // namespace
+
 cv::Mat read_label_image(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) fail_file(path, "no such label image");
@@ -25,6 +38,15 @@ cv::Mat read_label_image(const std::filesystem::path& path) {
     fail_file(path, cat("cannot decode the label image (", e.err, ")"));
   }
   if (label.empty()) fail_file(path, "cannot decode the label image (expected a colour PNG)");
+  // A colour that is no class is a dataset in another label scheme (or a
+  // resized, blended label image): its keypoints would be dropped silently.
+  for (int y = 0; y < label.rows; ++y)
+    for (int x = 0; x < label.cols; ++x) {
+      const cv::Vec3b& bgr = label.at<cv::Vec3b>(y, x);
+      if (class_of_colour(bgr) == kUnknownClass)
+        fail_file(path, cat("pixel (", x, ", ", y, ") has the colour RGB(", int{bgr[2]}, ", ", int{bgr[1]}, ", ",
+                            int{bgr[0]}, "), expected one of the nine class colours (", class_colour_list(), ")"));
+    }
   return label;
 }
 

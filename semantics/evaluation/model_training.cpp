@@ -1,5 +1,6 @@
 #include "semantics/evaluation/model_training.hpp"
 
+#include <iterator>
 #include <memory>
 
 #include <spdlog/spdlog.h>
@@ -41,7 +42,12 @@ TrainingRun train_model(const TrainingOptions& options) {
   const Stopwatch start;
   if (options.step < 1) throw Error(cat("training: the grid step must be at least 1, got ", options.step));
   const ForestParams params = training_forest_params(options);
-  std::vector<LabelledImage> images = read_facade_split(options.dataset, "train.txt");
+  if (options.datasets.empty()) throw Error("training: no dataset given");
+  std::vector<LabelledImage> images;
+  for (const std::filesystem::path& dataset : options.datasets) {
+    std::vector<LabelledImage> split = read_facade_split(dataset, "train.txt");
+    images.insert(images.end(), std::make_move_iterator(split.begin()), std::make_move_iterator(split.end()));
+  }
   if (options.max_train_images > 0 && images.size() > options.max_train_images) images.resize(options.max_train_images);
   const std::size_t photos = images.size();
   images = with_views(images, options.scales, options.grey);
@@ -80,7 +86,14 @@ Json training_summary_json(const TrainingRun& run, const TrainingOptions& option
   j["model"] = model_file.string();
   j["model_bytes"] = static_cast<unsigned long long>(model_bytes);
   j["format_version"] = kFsmodelVersion;
-  j["dataset"] = options.dataset.string();
+  // One dataset as a string (what earlier summaries hold), several as a list.
+  if (options.datasets.size() == 1) {
+    j["dataset"] = options.datasets.front().string();
+  } else {
+    Json datasets = Json::array();
+    for (const std::filesystem::path& d : options.datasets) datasets.push_back(d.string());
+    j["dataset"] = std::move(datasets);
+  }
   j["split"] = "train.txt";
   j["descriptor"] = run.model.descriptor;
   j["descriptor_width"] = run.model.descriptor_width();

@@ -18,7 +18,10 @@
 namespace facadeslam::semantics {
 
 struct TrainingOptions {
-  std::filesystem::path dataset;
+  // One or more datasets: the training photos are every one's train.txt
+  // together (a street model from CamVid's driving frames and
+  // LabelMeFacade's facades; the class table is the same).
+  std::vector<std::filesystem::path> datasets;
   std::string descriptor = "modular";  // a kPointDescriptorNames entry
   Genome genome = Genome::thesis_best();
   int step = kDefaultGridStep;

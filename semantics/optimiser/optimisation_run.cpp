@@ -283,7 +283,7 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
   save_fitness_plot(options.out / "fitness.png", history);
   if (options.train_best_model) {
     TrainingOptions training;
-    training.dataset = options.dataset;
+    training.datasets = {options.dataset};
     training.genome = result.best.best_genome;
     training.step = options.ga.step;
     training.balance = true;

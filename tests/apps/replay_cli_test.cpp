@@ -73,6 +73,24 @@ class ReplayCli : public ::testing::Test {
   test::TempDir dir_;
 };
 
+// Runs anywhere: the demo, the shipped model and the semantic settings are
+// found beside the executable, not in the current folder, so a replay from
+// any folder labels its map as it does from the project's own.
+TEST_F(ReplayCli, TheDemoFromAnotherFolderIsLabelledWithTheShippedModel) {
+  if (!fs::exists(test::source_dir() / "data" / "demo" / "sequence" / "rgb.txt"))
+    GTEST_SKIP() << "the embedded demo is not rendered (scripts/make-demo)";
+  const fs::path elsewhere = dir_ / "elsewhere";
+  fs::create_directories(elsewhere);
+  const fs::path previous = fs::current_path();
+  fs::current_path(elsewhere);
+  const test::CliResult r = run("replay --sync --limit 40 --out labelled");
+  fs::current_path(previous);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, ::testing::Not(HasSubstr("no model")));
+  const std::string report = test::read_file_text(elsewhere / "labelled" / "report.json");
+  EXPECT_GT(test::json_number(report, "points_labelled"), 100.0) << report.substr(0, 2000);
+}
+
 TEST_F(ReplayCli, CameraOfAnotherSizeIsRejectedNamingBoth) {
   const fs::path folder = still_folder("small", 3, 320, 240);
   std::string args = "-q replay ";

@@ -239,8 +239,10 @@ const Case kCases[] = {
     {"genome_string_invariance", "evaluate invariance --images {data}/images --genome 0101", 2, "--genome"},
     // Labels (LabelMeFacade layout)
     {"labels_missing_png", "evaluate labels --dataset {shared}/missing_label", 1, "labels"},
-    {"labels_unknown_colour_warns", "evaluate labels --dataset {shared}/unknown_colour --json {case}/report.json", 0,
-     "lie on a label colour of no class", Outputs::absent, "", "report.json"},
+    {"labels_unknown_colour", "evaluate labels --dataset {shared}/unknown_colour --json {case}/report.json", 1,
+     "has the colour RGB(255, 255, 255), expected one of the nine class colours"},
+    {"labels_unknown_colour_train", "train --dataset {shared}/unknown_colour --out {case}/m.fsmodel", 1,
+     "pixel (0, 0) has the colour RGB(255, 255, 255)"},
     // The command line (point 6): exit code 2, one short line
     {"cli_stride_zero", "replay {seq} --stride 0 --out {out}", 2, "--stride"},
     {"cli_start_negative", "replay {seq} --start -5 --out {out}", 2, "--start"},

@@ -119,8 +119,8 @@ std::string semantics_error(const std::string& yaml) {
 TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
   SemanticsOptions defaults;
   defaults.enabled = true;
-  defaults.model = "models/default.fsmodel";
-  defaults.grey_model = "models/grey.fsmodel";
+  defaults.model = test::source_dir() / "configs" / ".." / "models" / "default.fsmodel";
+  defaults.grey_model = test::source_dir() / "configs" / ".." / "models" / "grey.fsmodel";
   const SemanticsOptions shipped = load_semantics_options(test::source_dir() / "configs" / "semantics.yaml");
   EXPECT_EQ(shipped.enabled, defaults.enabled);
   EXPECT_EQ(shipped.model, defaults.model);
