@@ -194,6 +194,11 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
   cmd->add_flag("--grey", e.grey,
                 "Train and test on the photos turned grey (three equal channels, as a grey camera's frames reach "
                 "the semantic worker): the figures of a grey model");
+  cmd->add_option("--context-scale", e.context_scale,
+                  "Also classify each keypoint in the image shrunk to this scale and add the votes, as the semantic "
+                  "worker does (configs/semantics.yaml context_scale, 0.25); 0 = full size only")
+      ->check(CLI::Range(0.0, 0.9))
+      ->capture_default_str();
   auto* balance_option = cmd->add_flag("--balance", e.balance,
                 "Class-balanced training sample: every class sampled to the median class size (rare classes "
                 "oversampled, common ones subsampled)");

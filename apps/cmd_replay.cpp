@@ -46,6 +46,7 @@ namespace fs = std::filesystem;
 const fs::path kDemoSequence = "data/demo/sequence";
 const fs::path kDefaultOutput = "facadeslam-out";
 const fs::path kDefaultSemanticsConfig = "configs/semantics.yaml";
+const fs::path kStreetSemanticsConfig = "configs/semantics-street.yaml";  // --semantics street
 
 struct ReplayOptions {
   fs::path sequence, camera, config, out, gt, gt_labels, save_map, load_map;
@@ -63,15 +64,19 @@ struct ReplayOptions {
 // or model the user names must exist (the System loads the model before the
 // first frame), the defaults may be missing (run from elsewhere: a warning).
 SemanticsOptions semantics_options(const ReplayOptions& o) {
+  if (o.semantics == "street" && !o.semantics_config.empty())
+    throw Error("--semantics street reads the shipped configs/semantics-street.yaml; with --semantics-config " +
+                o.semantics_config.string() + " say --semantics on");
   SemanticsOptions semantics;
   semantics.enabled = true;
-  const fs::path shipped_config = shipped_file(kDefaultSemanticsConfig);
+  const fs::path shipped_config =
+      shipped_file(o.semantics == "street" ? kStreetSemanticsConfig : kDefaultSemanticsConfig);
   const bool user_config = !o.semantics_config.empty();
   if (user_config)
     semantics = load_semantics_options(o.semantics_config, semantics);
   else if (path_exists(shipped_config))
     semantics = load_semantics_options(shipped_config, semantics);
-  if (!o.semantics.empty()) semantics.enabled = o.semantics == "on";
+  if (!o.semantics.empty()) semantics.enabled = o.semantics != "off";
   if (!o.model.empty()) semantics.model = o.model;
   if (!o.grey_model.empty()) semantics.grey_model = o.grey_model;
   if (!semantics.enabled) return semantics;
@@ -277,7 +282,7 @@ void add_replay_command(CLI::App& app) {
                   "Ground-truth trajectory, TUM or KITTI (line i: frame i's pose): adds ATE and KITTI's relative "
                   "errors to the report");
   cmd->add_option("--gt-labels", options->gt_labels,
-                  "Folder of ground-truth label PNGs named like the frames: adds label accuracy to the report "
+                  "Folder of ground-truth label PNGs named like the frames (or their names with .png): adds label accuracy to the report "
                   "(default: label/ beside a synthetic sequence)");
   cmd->add_flag("--sync", options->sync, "Run the map maker inline: reproducible results");
   cmd->add_flag("--free-running", options->free_running,
@@ -298,9 +303,10 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--on-corrupt", options->on_corrupt, "Corrupt frame policy: skip or stop")
       ->check(CLI::IsMember({"skip", "stop"}));
   cmd->add_option("--semantics", options->semantics,
-                  "Label the map with the semantic worker and track label-aware: on or off (default: on, or as "
+                  "Label the map with the semantic worker and track label-aware: on, off, or street (on, with the "
+                  "models trained on driving video: configs/semantics-street.yaml) (default: on, or as "
                   "--semantics-config says)")
-      ->check(CLI::IsMember({"on", "off"}));
+      ->check(CLI::IsMember({"on", "off", "street"}));
   cmd->add_option("--semantics-config", options->semantics_config,
                   "Semantic settings YAML: model, class prior, unreliable classes (default: configs/semantics.yaml)");
   cmd->add_option("--model", options->model, "Forest model for the semantic worker (default: models/default.fsmodel)");

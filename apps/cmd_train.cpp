@@ -98,8 +98,14 @@ void add_train_command(CLI::App& app) {
   cmd->add_option("--genome", options->genome,
                   "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the "
                   "211-character 0/1 string (default: the thesis' best genome)");
-  cmd->add_flag("--balance", t.balance,
-                "Class-balanced training sample: every class sampled to the median class size");
+  auto* balance = cmd->add_flag("--balance", t.balance,
+                                "Class-balanced training sample: every class sampled to the median class size");
+  cmd->add_option("--balance-power", t.balance_power,
+                  "With --balance: 1 = every class alike; below 1 partly, class c gets median * (n_c / median)^(1 - "
+                  "P) rows (0.5: halfway between the raw proportions and balance)")
+      ->check(CLI::Range(0.01, 1.0))
+      ->needs(balance)
+      ->capture_default_str();
   cmd->add_option("--max-samples", t.max_samples, "At most N training keypoints, drawn at random (0 = all)")
       ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
@@ -118,6 +124,9 @@ void add_train_command(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::Range(0.05, 8.0))
       ->capture_default_str();
+  cmd->add_flag("--also-grey", t.also_grey,
+                "A colour model that also learns from each photo turned grey (it leans less on colour: CamVid's "
+                "dusk drive)");
   cmd->add_flag("--grey", t.grey, "Train on the photos turned grey: a model for grey cameras (KITTI's snippet)");
   cmd->add_option("--seed", t.seed, "Seed of the training-sample draw and of the forest")
       ->check(whole_number(0, kMaxSeed))

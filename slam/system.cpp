@@ -5,6 +5,7 @@
 #include "core/map/map_io.hpp"
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
+#include "semantics/text.hpp"
 #include "semantics/worker/neighbour_label_fusion.hpp"
 
 namespace facadeslam {
@@ -27,14 +28,24 @@ namespace {
 std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& options, KeyFramePointsQueue& queue,
                                                        const Map& map) {
   if (!options.enabled) return nullptr;
-  const auto load = [](const std::filesystem::path& path) {
+  // Colour keyframes go to `model`, grey ones to `grey_model`: a forest
+  // trained on the other kind labels without any error, badly.
+  using semantics::ModelImages;
+  const auto load = [](const std::filesystem::path& path, ModelImages wanted, const char* option) {
     semantics::ForestModel model = semantics::load_forest_model(path);
     if (model.classes != semantics::labelmefacade_class_table())
       fail_file(path, "a model for LabelMeFacade's nine classes (the map's class table)");
+    if (model.images != ModelImages::unknown && model.images != wanted)
+      fail_file(path, semantics::cat("a model trained on ", semantics::model_images_name(model.images), " images, given as ",
+                          option, ", which labels ", semantics::model_images_name(wanted), " keyframes",
+                          wanted == ModelImages::colour ? " (grey models go to --grey-model)"
+                                                        : " (colour models go to --model)"));
     return model;
   };
-  auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model), queue, options.class_weights());
-  if (!options.grey_model.empty()) worker->use_grey_model(load(options.grey_model));
+  auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model, ModelImages::colour, "the model"),
+                                                            queue, options.class_weights());
+  if (!options.grey_model.empty())
+    worker->use_grey_model(load(options.grey_model, ModelImages::grey, "the grey model"));
   worker->use_context_scale(options.context_scale);
   worker->use_moving_regions(options.moving_regions, options.moving_classes);
   worker->use_map_labels(map, options.map_labels());

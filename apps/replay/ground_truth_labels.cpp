@@ -19,6 +19,21 @@ fs::path find_ground_truth_labels(const fs::path& sequence, const fs::path& give
   return is_existing_folder(beside) && path_exists(folder / "labels.txt") ? beside : fs::path();
 }
 
+namespace {
+
+// A frame's label image: the same file name (synthetic sequences: PNG frames
+// and PNG labels), else its stem with .png (a JPEG frame beside a PNG label,
+// LabelMeFacade's and CamVid's layout: labels are never lossy).
+fs::path label_file_for(const fs::path& folder, const fs::path& frame_name) {
+  const fs::path same = folder / frame_name;
+  if (is_readable_file(same)) return same;
+  fs::path png = same;
+  png.replace_extension(".png");
+  return is_readable_file(png) ? png : same;
+}
+
+}  // namespace
+
 GroundTruthLabelFiles::GroundTruthLabelFiles(fs::path folder) : folder_(std::move(folder)) {}
 
 void GroundTruthLabelFiles::add(const Frame& frame) {
@@ -38,17 +53,17 @@ void GroundTruthLabelFiles::add(const Frame& frame) {
 
 void GroundTruthLabelFiles::require_files_for(const std::vector<fs::path>& frame_files) const {
   for (const fs::path& frame : frame_files) {
-    const fs::path label = folder_ / frame.filename();
+    const fs::path label = label_file_for(folder_, frame.filename());
     if (!is_readable_file(label))
       fail_file(label, "the ground-truth label image of frame " + frame.filename().string() + " " +
-                           describe_path(label) + " (--gt-labels: a label PNG named like each frame)");
+                           describe_path(label) + " (--gt-labels: a label PNG named like each frame, or its name with .png)");
   }
 }
 
 cv::Mat GroundTruthLabelFiles::class_ids(std::size_t frame_index) const {
   if (frame_index >= name_of_frame_.size() || name_of_frame_[frame_index] == 0)
     fail_file(folder_, "ground-truth labels: frame " + std::to_string(frame_index) + " was not read");
-  const fs::path path = folder_ / names_[name_of_frame_[frame_index] - 1];
+  const fs::path path = label_file_for(folder_, names_[name_of_frame_[frame_index] - 1]);
   const cv::Mat colours = semantics::read_label_image(path);
   if (colours.size() != frame_size_)
     fail_file(path, "label image is " + std::to_string(colours.cols) + "x" + std::to_string(colours.rows) +

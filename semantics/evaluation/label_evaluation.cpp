@@ -12,6 +12,7 @@
 #include "semantics/evaluation/model_training.hpp"
 #include "semantics/forest/forest_model.hpp"
 #include "semantics/forest/random_forest.hpp"
+#include "semantics/point_descriptors/forest_votes.hpp"
 #include "semantics/point_descriptors/point_descriptor.hpp"
 #include "semantics/text.hpp"
 #include "core/util/stopwatch.hpp"
@@ -31,7 +32,8 @@ void test_forest(const std::vector<LabelledImage>& images, const LabelEvaluation
   Progress progress("testing", images.size());
   const ClassifiedImages c = classify_labelled_images(
       images, options.step, descriptor, forest, result.confusion,
-      [&](std::size_t i, const LoadedLabelledImage&, const LabelledKeypoints&, double) { progress.update(i + 1); });
+      [&](std::size_t i, const LoadedLabelledImage&, const LabelledKeypoints&, double) { progress.update(i + 1); },
+      load_labelled_image, options.context_scale);
   result.unlabelled_keypoints += c.unlabelled;
   result.test_keypoints += c.keypoints;
   result.test_extraction_seconds += c.extraction_seconds;
@@ -73,7 +75,7 @@ double LabelEvaluation::forest_ms_per_image() const {
 ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& images, int step,
                                           PointDescriptor& descriptor, const RandomForest& forest,
                                           ConfusionMatrix& confusion, const AfterImage& after_image,
-                                          const LabelledImageLoader& load) {
+                                          const LabelledImageLoader& load, double context_scale) {
   ClassifiedImages out;
   for (std::size_t i = 0; i < images.size(); ++i) {
     const LoadedLabelledImage loaded = load(images[i]);
@@ -83,12 +85,27 @@ ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& imag
     double extraction_s = 0.0;
     if (!kps.points.empty()) {
       Stopwatch stage;
-      const cv::Mat rows = descriptor.compute(loaded.bgr, kps.points);
-      extraction_s = stage.elapsed_s();
-      out.extraction_seconds += extraction_s;
-      stage.restart();
-      const std::vector<int> predicted = forest.predict(rows);
-      out.forest_seconds += stage.elapsed_s();
+      std::vector<int> predicted;
+      if (context_scale > 0.0) {
+        // The worker's sum of votes at full size and at the context scale;
+        // timed as a whole as extraction.
+        cv::Mat shares = forest_vote_shares(descriptor, forest, loaded.bgr, kps.points, 1.0);
+        shares += forest_vote_shares(descriptor, forest, loaded.bgr, kps.points, context_scale);
+        extraction_s = stage.elapsed_s();
+        out.extraction_seconds += extraction_s;
+        for (int r = 0; r < shares.rows; ++r) {
+          cv::Point best;
+          cv::minMaxLoc(shares.row(r), nullptr, nullptr, nullptr, &best);
+          predicted.push_back(forest.classes()[static_cast<std::size_t>(best.x)]);
+        }
+      } else {
+        const cv::Mat rows = descriptor.compute(loaded.bgr, kps.points);
+        extraction_s = stage.elapsed_s();
+        out.extraction_seconds += extraction_s;
+        stage.restart();
+        predicted = forest.predict(rows);
+        out.forest_seconds += stage.elapsed_s();
+      }
       for (std::size_t k = 0; k < predicted.size(); ++k) confusion.add(kps.classes[k], predicted[k]);
     }
     if (after_image) after_image(i, loaded, kps, extraction_s);
@@ -162,6 +179,10 @@ LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std:
   }
   check_forest_model(model_file, model,
                      {model.descriptor, descriptor->width(), model.genome, labelmefacade_class_table()});
+  const ModelImages tested = options.grey ? ModelImages::grey : ModelImages::colour;
+  if (model.images != ModelImages::unknown && model.images != tested)
+    fail_file(model_file, cat("a model trained on ", model_images_name(model.images), " images, tested on ",
+                              model_images_name(tested), " ones (", options.grey ? "drop --grey" : "add --grey", ")"));
   spdlog::info("loaded {}: {} trees, {} nodes, in {:.1f} ms", model_file.string(), model.forest.tree_count(),
                model.forest.nodes().size(), load_ms);
 
@@ -192,6 +213,7 @@ Json to_json(const LabelEvaluation& r, const LabelEvaluationOptions& o) {
   j["grid_border"] = kDefaultGridBorder;
   j["balance"] = if_trained(o.balance);
   j["grey"] = o.grey;
+  j["context_scale"] = o.context_scale;
   j["max_samples"] = if_trained(static_cast<unsigned long long>(o.max_samples));
   j["seed"] = static_cast<unsigned long long>(r.forest.seed);
   Json forest = Json::object();

@@ -39,6 +39,10 @@ struct LabelEvaluationOptions {
   std::uint64_t seed = 1;               // training-sample draw and forest
   std::filesystem::path model_out;      // save the trained forest here when set
   bool grey = false;                    // train and test on the photos turned grey (a grey camera's model)
+  // > 0: each test keypoint is classified by the votes at full size plus
+  // those in the image shrunk to this scale, as the semantic worker does
+  // (configs/semantics.yaml context_scale); 0 = full size only.
+  double context_scale = 0.0;
 };
 
 struct LabelEvaluation {
@@ -97,7 +101,8 @@ using AfterImage = std::function<void(std::size_t index, const LoadedLabelledIma
 ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& images, int step,
                                           PointDescriptor& descriptor, const RandomForest& forest,
                                           ConfusionMatrix& confusion, const AfterImage& after_image = {},
-                                          const LabelledImageLoader& load = load_labelled_image);
+                                          const LabelledImageLoader& load = load_labelled_image,
+                                          double context_scale = 0.0);
 
 // Class names in id order (LabelMeFacade's nine).
 std::vector<std::string> evaluation_class_names();

@@ -50,13 +50,20 @@ TrainingRun train_model(const TrainingOptions& options) {
   }
   if (options.max_train_images > 0 && images.size() > options.max_train_images) images.resize(options.max_train_images);
   const std::size_t photos = images.size();
-  images = with_views(images, options.scales, options.grey);
+  if (options.also_grey && options.grey) throw Error("training: --also-grey adds grey views to a colour model; a grey model (--grey) has only those");
+  std::vector<LabelledImage> views = with_views(images, options.scales, options.grey);
+  if (options.also_grey) {
+    const std::vector<LabelledImage> grey_views = with_views(images, options.scales, true);
+    views.insert(views.end(), grey_views.begin(), grey_views.end());
+  }
+  images = std::move(views);
   const std::unique_ptr<PointDescriptor> descriptor = make_point_descriptor(options.descriptor, options.genome);
 
   TrainingSetOptions set_options;
   set_options.step = options.step;
   set_options.keypoints = options.keypoints;
   set_options.balance = options.balance;
+  set_options.balance_power = options.balance_power;
   set_options.max_samples = options.max_samples;
   set_options.seed = options.seed;
   TrainingSet set = build_training_set(images, set_options, *descriptor);
@@ -73,6 +80,7 @@ TrainingRun train_model(const TrainingOptions& options) {
   run.model.descriptor = std::string(descriptor->name());
   run.model.genome = options.genome;
   run.model.classes = labelmefacade_class_table();
+  run.model.images = options.grey ? ModelImages::grey : ModelImages::colour;
   run.model.params = params;
   run.train_images = photos;
   run.set = std::move(set.stats);
@@ -110,7 +118,9 @@ Json training_summary_json(const TrainingRun& run, const TrainingOptions& option
   j["keypoints"] = keypoint_source_name(options.keypoints);
   j["scales"] = options.scales;
   j["grey"] = options.grey;
+  j["also_grey"] = options.also_grey;
   j["balance"] = options.balance;
+  if (options.balance) j["balance_power"] = options.balance_power;
   j["max_samples"] = static_cast<unsigned long long>(options.max_samples);
   j["train_images"] = static_cast<unsigned long long>(run.train_images);
   j["train_keypoints"] = static_cast<unsigned long long>(run.set.keypoints);

@@ -27,6 +27,7 @@ struct TrainingOptions {
   int step = kDefaultGridStep;
   KeypointSource keypoints = KeypointSource::grid;  // grid (the thesis') or FAST corners (the map's)
   bool balance = false;
+  double balance_power = 1.0;  // with balance: 1 = fully, (0, 1) partly (training_sample.hpp)
   std::size_t max_train_images = 0;  // first N of train.txt; 0 = all
   std::size_t max_samples = 0;       // training keypoints cap; 0 = all
   std::uint64_t seed = 1;            // training-sample draw and forest
@@ -35,6 +36,10 @@ struct TrainingOptions {
   // facades at; grey trains a model for grey cameras.
   std::vector<double> scales{1.0};
   bool grey = false;
+  // Each photo in colour and also turned grey (a colour model that leans
+  // less on hue: on CamVid's dusk test drive the colour of a hedge or a
+  // wall misleads a forest that only learnt daylight colours).
+  bool also_grey = false;
   // Forest size overrides (0 = the genome's): the shipped model trades a
   // smaller forest for a file that fits in the repository.
   int trees = 0, max_depth = 0;

@@ -1,6 +1,8 @@
 #include "semantics/evaluation/training_sample.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <random>
 #include <tuple>
 
@@ -37,6 +39,29 @@ std::size_t balanced_class_target(const std::vector<std::size_t>& class_counts, 
   return target;
 }
 
+std::vector<std::size_t> balanced_class_rows(const std::vector<std::size_t>& class_counts, std::size_t max_samples,
+                                             double balance_power) {
+  if (!(balance_power > 0.0 && balance_power <= 1.0))
+    throw Error("training sample: the balance power must lie in (0, 1], got " + std::to_string(balance_power));
+  std::vector<std::size_t> rows(class_counts.size(), 0);
+  const std::size_t median = balanced_class_target(class_counts, 0);
+  if (median == 0) return rows;
+  std::vector<double> wanted(class_counts.size(), 0.0);
+  double total = 0.0;
+  for (std::size_t c = 0; c < class_counts.size(); ++c) {
+    if (class_counts[c] == 0) continue;
+    const double ratio = static_cast<double>(class_counts[c]) / static_cast<double>(median);
+    wanted[c] = balance_power == 1.0 ? static_cast<double>(median)
+                                     : static_cast<double>(median) * std::pow(ratio, 1.0 - balance_power);
+    total += wanted[c];
+  }
+  const double scale = max_samples > 0 && total > static_cast<double>(max_samples)
+                           ? static_cast<double>(max_samples) / total : 1.0;
+  for (std::size_t c = 0; c < class_counts.size(); ++c)
+    if (class_counts[c] > 0) rows[c] = std::max<std::size_t>(1, static_cast<std::size_t>(wanted[c] * scale));
+  return rows;
+}
+
 std::vector<SampleCandidate> choose_training_sample(const std::vector<SampleCandidate>& candidates, int classes,
                                                     const SampleOptions& options) {
   std::mt19937_64 rng(options.seed);
@@ -53,8 +78,12 @@ std::vector<SampleCandidate> choose_training_sample(const std::vector<SampleCand
     }
     std::vector<std::size_t> counts;
     for (const auto& group : by_class) counts.push_back(group.size());
-    const std::size_t target = balanced_class_target(counts, options.max_samples);
-    for (const auto& group : by_class) {
+    // Fully balanced: the (capped) median for every class, as it always was.
+    std::vector<std::size_t> targets(counts.size(), balanced_class_target(counts, options.max_samples));
+    if (options.balance_power != 1.0) targets = balanced_class_rows(counts, options.max_samples, options.balance_power);
+    for (std::size_t c = 0; c < by_class.size(); ++c) {
+      const auto& group = by_class[c];
+      const std::size_t target = targets[c];
       if (group.empty()) continue;
       if (group.size() >= target) {
         const auto picked = pick_without_replacement(group, target, rng);

@@ -40,6 +40,7 @@ TrainingSet build_training_set(const std::vector<LabelledImage>& images, const T
 
   SampleOptions sample_options;
   sample_options.balance = options.balance;
+  sample_options.balance_power = options.balance_power;
   sample_options.max_samples = options.max_samples;
   sample_options.seed = options.seed;
   const std::vector<SampleCandidate> sample = choose_training_sample(candidates, kClasses, sample_options);

@@ -18,6 +18,7 @@ struct TrainingSetOptions {
   int step = 9;                 // grid step
   KeypointSource keypoints = KeypointSource::grid;  // where the rows are described
   bool balance = false;         // training_sample.hpp
+  double balance_power = 1.0;   // with balance: 1 = fully, (0, 1) partly (training_sample.hpp)
   std::size_t max_samples = 0;  // 0 = every labelled keypoint
   std::uint64_t seed = 1;
   bool quiet = false;  // no info line (the optimiser builds hundreds of sets)

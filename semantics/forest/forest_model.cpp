@@ -127,6 +127,15 @@ void require_model_file_name(const std::filesystem::path& path) {
   if (!is_fsmodel(path)) storage_format(path);
 }
 
+const char* model_images_name(ModelImages images) {
+  switch (images) {
+    case ModelImages::colour: return "colour";
+    case ModelImages::grey: return "grey";
+    case ModelImages::unknown: break;
+  }
+  return "unknown";
+}
+
 std::vector<ClassEntry> labelmefacade_class_table() {
   std::vector<ClassEntry> table;
   for (const SemanticClass& c : kSemanticClasses) table.push_back({c.id, std::string(c.name), cv::Vec3b(c.r, c.g, c.b)});

@@ -15,6 +15,7 @@
 //   format: facadeslam-forest, version: 1, descriptor: "modular",
 //   descriptor_width: 93, genome: "<211 0/1 characters>",
 //   classes: [{id, name, rgb: [r, g, b]}, ...], forest: {RTrees}
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,6 +33,14 @@ struct ClassEntry {
   friend bool operator==(const ClassEntry&, const ClassEntry&) = default;
 };
 
+// What a forest was trained on: colour photos, or photos turned grey (a
+// model for grey cameras, `train --grey`). Used on the other kind it labels
+// badly without any error (the colour model on grey frames calls a third of
+// a street sky), so loading one for the wrong kind is refused. Unknown for
+// .fsmodel files of format 1 and for OpenCV documents.
+enum class ModelImages : std::uint8_t { colour = 0, grey = 1, unknown = 255 };
+const char* model_images_name(ModelImages images);  // "colour", "grey", "unknown"
+
 // LabelMeFacade's nine classes (core/map/semantic_classes.hpp), in id order.
 std::vector<ClassEntry> labelmefacade_class_table();
 
@@ -39,6 +48,7 @@ struct ForestModel {
   std::string descriptor;  // point descriptor name ("modular", "sift", ...)
   Genome genome;
   std::vector<ClassEntry> classes;
+  ModelImages images = ModelImages::unknown;
   // The settings the forest was trained with. A FileStorage model does not
   // record the seed (read back as 0).
   ForestParams params;

@@ -31,6 +31,7 @@ std::vector<unsigned char> encode_payload(const ForestModel& model) {
   ByteWriter w;
   w.put_text(model.descriptor);
   w.put_text(model.genome.to_string());
+  w.put(static_cast<std::uint8_t>(model.images));
   w.put(static_cast<std::uint32_t>(model.classes.size()));
   for (const ClassEntry& c : model.classes) {
     w.put(static_cast<std::int32_t>(c.id));
@@ -60,11 +61,19 @@ std::vector<unsigned char> encode_payload(const ForestModel& model) {
   return {w.bytes().begin(), w.bytes().end()};
 }
 
-ForestModel decode_payload(const std::vector<unsigned char>& payload, const std::filesystem::path& path) {
+ForestModel decode_payload(const std::vector<unsigned char>& payload, std::uint32_t version,
+                           const std::filesystem::path& path) {
   ByteReader r({reinterpret_cast<const char*>(payload.data()), payload.size()}, path, "damaged model file");
   ForestModel model;
   model.descriptor = r.text("the descriptor name", 64);
   model.genome = Genome::parse(r.text("the genome", 1024), cat(path.string(), " (genome)"));
+  if (version >= 2) {
+    const auto images = r.get<std::uint8_t>("the kind of training images");
+    if (images != 0 && images != 1 && images != 255)
+      fail_file(path, cat("damaged model file: training images of kind ", int{images},
+                          ", expected 0 (colour), 1 (grey) or 255 (unknown)"));
+    model.images = static_cast<ModelImages>(images);
+  }
   const std::size_t class_count = r.count("the class count", 11, kMaxItems);
   for (std::size_t k = 0; k < class_count; ++k) {
     ClassEntry c;
@@ -155,8 +164,9 @@ ForestModel read_fsmodel(const std::filesystem::path& path) {
   ByteReader header({reinterpret_cast<const char*>(file.data()), kHeaderBytes}, path, "damaged model file");
   header.take(kMagic.size(), "the magic");
   const auto version = header.get<std::uint32_t>("the format version");
-  if (version != kFsmodelVersion)
-    fail_file(path, cat("model format version ", version, ", expected ", kFsmodelVersion,
+  // Format 1 differs only by not saying what images the forest learnt from.
+  if (version != 1 && version != kFsmodelVersion)
+    fail_file(path, cat("model format version ", version, ", expected 1 or ", kFsmodelVersion,
                         " (retrain it with this facadeslam: `facadeslam train`)"));
   const auto size = header.get<std::uint64_t>("the payload size");
   const auto crc = header.get<std::uint32_t>("the checksum");
@@ -172,7 +182,7 @@ ForestModel read_fsmodel(const std::filesystem::path& path) {
     fail_file(path, cat("damaged model file: ", e.what()));
   }
   if (crc32_of(payload) != crc) fail_file(path, "damaged model file: the checksum of the forest does not match");
-  return decode_payload(payload, path);
+  return decode_payload(payload, version, path);
 }
 
 }  // namespace facadeslam::semantics

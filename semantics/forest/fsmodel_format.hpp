@@ -10,6 +10,8 @@
 //     8  u64 compressed size = the rest of the file
 //   payload, zlib-deflated
 //     descriptor name (u32 length + bytes), genome (u32 length + 211 '0'/'1')
+//     u8 images the forest was trained on: 0 colour, 1 grey, 255 unknown (format 2 on;
+//       format 1 files, which lack it, are read as unknown)
 //     class table: u32 count, then per class i32 id, name, u8 r g b
 //     forest settings: i32 trees, depth, split variables, min samples; u64 seed
 //     forest: i32 width; u32 count + i32 class ids (the vote columns);
@@ -27,7 +29,7 @@
 
 namespace facadeslam::semantics {
 
-inline constexpr int kFsmodelVersion = 1;
+inline constexpr int kFsmodelVersion = 2;
 
 // Writes atomically. Only the bytes: the caller checks the model first.
 void write_fsmodel(const std::filesystem::path& path, const ForestModel& model);

@@ -12,6 +12,7 @@
 
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
+#include "semantics/point_descriptors/forest_votes.hpp"
 
 namespace facadeslam::semantics {
 
@@ -72,22 +73,7 @@ SemanticWorker::~SemanticWorker() { stop(); }
 
 cv::Mat SemanticWorker::vote_shares(const Classifier& classifier, const cv::Mat& image,
                                     const std::vector<cv::Point2f>& keypoints, double scale) {
-  cv::Mat rows;
-  if (scale == 1.0) {
-    rows = classifier.descriptor->compute(image, keypoints);
-  } else {
-    cv::Mat shrunk;
-    cv::resize(image, shrunk, cv::Size(), scale, scale, cv::INTER_AREA);
-    std::vector<cv::Point2f> moved;
-    moved.reserve(keypoints.size());
-    for (const cv::Point2f& k : keypoints)
-      moved.emplace_back(std::min(k.x * static_cast<float>(scale), shrunk.cols - 1.f),
-                         std::min(k.y * static_cast<float>(scale), shrunk.rows - 1.f));
-    rows = classifier.descriptor->compute(shrunk, moved);
-  }
-  cv::Mat shares;
-  classifier.model.forest.predict(rows, shares);
-  return shares;
+  return forest_vote_shares(*classifier.descriptor, classifier.model.forest, image, keypoints, scale);
 }
 
 void SemanticWorker::label(const KeyFramePoints& job) {

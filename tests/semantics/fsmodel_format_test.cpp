@@ -39,6 +39,7 @@ class FsmodelFile : public ::testing::Test {
     model.descriptor = "edd";
     model.genome = Genome::thesis_best();
     model.classes = labelmefacade_class_table();
+    model.images = ModelImages::grey;
     save_forest_model(path, model);
     bytes = read_bytes(path);
   }
@@ -66,6 +67,7 @@ TEST_F(FsmodelFile, RoundTripIsExact) {
   EXPECT_EQ(loaded.descriptor, "edd");
   EXPECT_EQ(loaded.genome, Genome::thesis_best());
   EXPECT_EQ(loaded.classes, labelmefacade_class_table());
+  EXPECT_EQ(loaded.images, ModelImages::grey);
   EXPECT_EQ(loaded.params.trees, 15);
   EXPECT_EQ(loaded.params.max_depth, 8);
   EXPECT_EQ(loaded.params.split_variables, 2);
@@ -162,10 +164,10 @@ TEST_F(FsmodelFile, ForeignFilesAndOtherVersionsAreRejected) {
   write_bytes(path, "%YAML:1.0\n---\nformat: facadeslam-forest\nversion: 1\n");
   expect_rejected("not a facadeslam model file");
   std::string v2 = bytes;
-  const std::uint32_t version = 2;
+  const std::uint32_t version = 3;
   std::memcpy(v2.data() + 8, &version, 4);
   write_bytes(path, v2);
-  expect_rejected("model format version 2, expected 1");
+  expect_rejected("model format version 3, expected 1 or 2");
   EXPECT_THAT([&] { load_forest_model(dir / "missing.fsmodel"); },
               ThrowsMessage<Error>(AllOf(HasSubstr("missing.fsmodel"), HasSubstr("no such model file"))));
 }

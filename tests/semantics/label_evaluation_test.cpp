@@ -200,6 +200,21 @@ TEST(TrainingSample, BalanceGivesEveryPresentClassTheMedianCount) {
   EXPECT_THROW(choose_training_sample(candidates, 3, SampleOptions{true, 0, 1}), Error);
 }
 
+TEST(TrainingSample, PartBalanceLiesBetweenTheProportionsAndBalance) {
+  // Median 100: class c gets 100 * (n_c / 100)^(1 - p) rows.
+  EXPECT_EQ(balanced_class_rows({400, 100, 0, 20}, 0, 1.0), (std::vector<std::size_t>{100, 100, 0, 100}));
+  EXPECT_EQ(balanced_class_rows({400, 100, 0, 20}, 0, 0.5), (std::vector<std::size_t>{200, 100, 0, 44}));
+  // Capped: scaled down together (344.7 wanted, 172 allowed; rounded down).
+  EXPECT_EQ(balanced_class_rows({400, 100, 0, 20}, 172, 0.5), (std::vector<std::size_t>{99, 49, 0, 22}));
+  EXPECT_THROW(balanced_class_rows({1, 2}, 0, 0.0), Error);
+  EXPECT_THROW(balanced_class_rows({1, 2}, 0, 1.5), Error);
+  SampleOptions options;
+  options.balance = true;
+  options.balance_power = 0.5;
+  const auto sample = choose_training_sample(candidates_with_counts({400, 100, 0, 20}), 4, options);
+  EXPECT_EQ(class_counts(sample, 4), (std::vector<std::size_t>{200, 100, 0, 44}));
+}
+
 // ------------------------------------------------------------------ dataset
 
 class SyntheticDataset : public ::testing::Test {
