@@ -70,5 +70,47 @@ TEST(EvaluateLabelsRegression, ShippedModelOnLabelMeFacadeSubset) {
   EXPECT_GT(average, kShippedModelMinimumAverageRate);
 }
 
+// The street models (models/README.md) on CamVid's whole test split (drive
+// 0006R0, at dusk; trained on the other two drives), keypoint-wise on the
+// 9-pixel grid, as `evaluate labels --model` reports them. Measured
+// 2026-12-07: colour 0.5928 overall / 0.5331 average, grey (the same frames
+// turned grey) 0.6271 / 0.5246; the facade model scores 0.5527 / 0.4047 on
+// the colour frames. Issue 42's bars: colour 0.62 / 0.52 (the overall one is
+// not reached: road taken for pavement at dusk), grey 0.55 overall.
+struct StreetModelCase {
+  const char* model;
+  bool grey;
+  double min_overall, min_average;
+};
+
+class StreetModelRegression : public ::testing::TestWithParam<StreetModelCase> {};
+
+TEST_P(StreetModelRegression, OnCamVidTestDrive) {
+  FACADESLAM_REQUIRE_SHARED_DATA("camvid");
+  const StreetModelCase& c = GetParam();
+  test::TempDir dir;
+  const auto json = dir / "report.json";
+  std::string args = "-q evaluate labels --dataset ";
+  args.append(test::shell_quoted((test::shared_data_dir() / "camvid").string()))
+      .append(" --model ")
+      .append(test::shell_quoted((test::source_dir() / "models" / c.model).string()))
+      .append(c.grey ? " --grey" : "")
+      .append(" --json ")
+      .append(test::shell_quoted(json.string()));
+  const auto r = test::run_cli(FACADESLAM_BINARY, args, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string report = test::read_file_text(json);
+  const double overall = test::json_number(report, "overall_recognition_rate");
+  const double average = test::json_number(report, "average_recognition_rate");
+  std::printf("[  FIGURES ] %s on CamVid test%s: overall %.4f, average %.4f\n", c.model, c.grey ? " (grey)" : "",
+              overall, average);
+  EXPECT_GE(overall, c.min_overall);
+  EXPECT_GE(average, c.min_average);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, StreetModelRegression,
+                         ::testing::Values(StreetModelCase{"street.fsmodel", false, 0.58, 0.52},
+                                           StreetModelCase{"street-grey.fsmodel", true, 0.60, 0.51}));
+
 }  // namespace
 }  // namespace facadeslam
