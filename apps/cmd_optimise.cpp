@@ -53,11 +53,11 @@ void report(const Options& o, const semantics::OptimiseResult& r) {
   const double busy = r.describe_seconds + r.train_seconds + r.validate_seconds + r.invariance_seconds;
   if (busy > 0)
     std::printf("optimise: evaluation time: %.0f %% describing the training sample, %.0f %% training forests, "
-                "%.0f %% validating (SIFT timing included), %.0f %% invariance cases\n",
+                "%.0f %% validating, %.0f %% invariance cases\n",
                 100 * r.describe_seconds / busy, 100 * r.train_seconds / busy, 100 * r.validate_seconds / busy,
                 100 * r.invariance_seconds / busy);
-  std::printf("optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, %.3f x cv::SIFT's time, "
-              "%d values -> %s\n",
+  std::printf("optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, "
+              "%.3f x cv::SIFT's time (modelled), %d values -> %s\n",
               r.best.best, r.best.generation, r.best_evaluation.overall, r.best_evaluation.average,
               r.best_evaluation.time_ratio, r.best_evaluation.values, (o.run.out / "best.genome").string().c_str());
   std::fflush(stdout);
@@ -145,11 +145,8 @@ std::optional<semantics::OptimiseResult> run_under_mpi(const Options& o) {
 
 void run(Options& o) {
   // OpenCV single-threaded: the evaluations are the parallel unit
-  // (--workers, MPI ranks), and OpenCV's own threads made the time term
-  // depend on the machine's load: cv::SIFT parallelises its pyramid and
-  // descriptors, so the same genome measured 0.065x SIFT's time beside a CI
-  // run and 0.141x on a quiet machine. Single-threaded, both sides of the
-  // ratio are one core's work, as in bench_semantics_modules.
+  // (--workers, MPI ranks); OpenCV's threads inside each would only contend
+  // with the other workers for the same cores.
   cv::setNumThreads(1);
   // The run folder can be made (or is one) before any work, and is a new
   // or empty folder or an earlier run's, never one of other files.

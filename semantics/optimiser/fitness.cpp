@@ -13,7 +13,6 @@
 #include "core/util/stopwatch.hpp"
 #include "semantics/evaluation/confusion_matrix.hpp"
 #include "semantics/evaluation/label_evaluation.hpp"
-#include "semantics/evaluation/labelled_keypoints.hpp"
 #include "semantics/evaluation/training_set.hpp"
 #include "semantics/forest/forest_params.hpp"
 #include "semantics/forest/random_forest.hpp"
@@ -171,8 +170,8 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
     return e;
   }
   const std::unique_ptr<PointDescriptor> descriptor = make_point_descriptor("modular", genome);
-  const std::unique_ptr<PointDescriptor> sift = make_point_descriptor("sift", genome);
   e.values = descriptor->width();
+  e.time_ratio = modelled_time_ratio(genome.decode(), options_.cost_model);
 
   TrainingSetOptions set_options;
   set_options.step = options_.step;
@@ -187,8 +186,6 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
 
   // Every fold's validation keypoints go into one confusion matrix.
   ConfusionMatrix confusion(static_cast<int>(kSemanticClasses.size()));
-  double descriptor_s = 0.0, sift_s = 0.0;
-  std::size_t timed = 0;
   const LabelledImageLoader load = std::cref(*images_);
   for (const FitnessFold& fold : split_.folds) {
     Stopwatch phase;
@@ -198,18 +195,7 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
     const RandomForest forest = RandomForest::train(set.samples, set.labels, params);
     e.train_seconds += phase.elapsed_s();
     phase.restart();
-    classify_labelled_images(fold.validation, options_.step, *descriptor, forest, confusion,
-                             [&](std::size_t, const LoadedLabelledImage& loaded, const LabelledKeypoints& kps,
-                                 double extraction_s) {
-                               // The ratio on the first images: the genome's time, then SIFT's on the same keypoints.
-                               if (kps.points.empty() || timed >= options_.timing_images) return;
-                               ++timed;
-                               descriptor_s += extraction_s;
-                               const Stopwatch stage;
-                               const cv::Mat sift_rows = sift->compute(loaded.bgr, kps.points);
-                               sift_s += stage.elapsed_s();
-                             },
-                             load);
+    classify_labelled_images(fold.validation, options_.step, *descriptor, forest, confusion, {}, load);
     e.validate_seconds += phase.elapsed_s();
   }
   if (options_.weights.invariance > 0) {
@@ -220,7 +206,6 @@ GenomeEvaluation FitnessEvaluator::evaluate(const Genome& genome) const {
   e.valid = confusion.total() > 0;
   e.overall = e.valid ? confusion.overall_recognition_rate() : 0.0;
   e.average = e.valid ? confusion.average_recognition_rate() : 0.0;
-  e.time_ratio = sift_s > 0.0 ? descriptor_s / sift_s : 0.0;
   e.objective = objective_of(e, options_.weights);
   e.seconds = watch.elapsed_s();
   return e;

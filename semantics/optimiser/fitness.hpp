@@ -2,9 +2,11 @@
 // A genome's fitness (issue 18, thesis IV.4): a forest trained with the
 // genome's descriptor and forest fields on the training part of train.txt,
 // tested on a validation part carved from train.txt by the run's seed, or
-// cross-validated over parts of it (test.txt is never seen), and the genome's extraction time as a ratio to
-// cv::SIFT's on the same validation keypoints, measured in the same
-// evaluation (so the ratio, not the machine, is what counts).
+// cross-validated over parts of it (test.txt is never seen), and the
+// genome's extraction time as a ratio to cv::SIFT's on the same keypoints,
+// modelled from what the genome computes (cost_model.hpp) rather than
+// measured: an evaluation is a function of the genome, the split and the
+// seed, so runs with the same seed agree whatever the threads, ranks or load.
 //
 // With a weight on it, a small invariance term: the genome's match rate
 // (`evaluate invariance`'s measure) under a rotation of 20 degrees, a resize
@@ -45,14 +47,15 @@ nlohmann::json to_json(const FitnessSplit& split);
 struct GenomeEvaluation {
   bool valid = false;          // a genome without an active value describes nothing
   double overall = 0, average = 0;  // recognition rates on the validation keypoints
-  double time_ratio = 0;       // extraction time / cv::SIFT's on the same keypoints
+  double time_ratio = 0;       // modelled extraction time / cv::SIFT's on the same keypoints (cost_model.hpp)
   double invariance = 0;       // mean match rate under the invariance cases (0 unless weighted)
   int values = 0;              // descriptor length
   double objective = 0;        // FitnessWeights applied (-infinity when invalid)
-  double seconds = 0;          // the evaluation's wall time, of which:
+  // Wall time: where an evaluation's time went (never part of the objective).
+  double seconds = 0;          // the evaluation, of which:
   double describe_seconds = 0;  // reading the training images and describing the sample
   double train_seconds = 0;     // training the forest
-  double validate_seconds = 0;  // describing and classifying the validation keypoints, SIFT timing included
+  double validate_seconds = 0;  // describing and classifying the validation keypoints
   double invariance_seconds = 0;  // the invariance cases
 };
 nlohmann::json to_json(const GenomeEvaluation& e);

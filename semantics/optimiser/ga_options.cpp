@@ -62,8 +62,6 @@ GaOptions load_ga_options(const std::filesystem::path& path) {
       static_cast<std::size_t>(root.get_int("max_validation_images", Range::closed(0, 1000000), 0));
   o.max_samples = static_cast<std::size_t>(root.get_int("max_samples", Range::closed(0, 100000000), 0));
   o.step = root.get_int("step", Range::closed(1, 1000), o.step);
-  o.timing_images = static_cast<std::size_t>(
-      root.get_int("timing_images", Range::closed(1, 1000000), static_cast<int>(o.timing_images)));
   o.max_trees = root.get_int("max_trees", Range::closed(0, 10000), o.max_trees);
   o.max_depth = root.get_int("max_depth", Range::closed(0, 1000), o.max_depth);
   if (const auto w = root.optional_child("fitness")) {
@@ -76,6 +74,7 @@ GaOptions load_ga_options(const std::filesystem::path& path) {
     f.size = w->get_double("size", Range::closed(0, 100), f.size);
     w->finish();
   }
+  if (const auto c = root.optional_child("cost_model")) read_cost_model(*c, o.cost_model);
   root.finish();
   if (o.elites >= o.population)
     root.fail("elites", "fewer than the population (" + std::to_string(o.population) + ")", std::to_string(o.elites));

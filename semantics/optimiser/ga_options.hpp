@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include "semantics/optimiser/cost_model.hpp"
+
 namespace facadeslam::semantics {
 
 enum class Selection { roulette, rank, tournament, stochastic_universal };
@@ -21,7 +23,9 @@ const char* to_string(Crossover c);
 //   - w_time * max(0, time_ratio / target_time_ratio - 1)
 //   - w_size * values / 128
 // where time_ratio is the genome's extraction time over cv::SIFT's on the
-// same keypoints (0.1: ten times faster) and values its descriptor length.
+// same keypoints (0.1: ten times faster) as the cost model puts it
+// (cost_model.hpp: calibrated on the bench, not measured during the run) and
+// values its descriptor length.
 struct FitnessWeights {
   double overall = 0.5;
   double average = 0.5;
@@ -74,13 +78,12 @@ struct GaOptions {
   // Images and keypoints per fitness evaluation (0: all).
   std::size_t max_train_images = 0, max_validation_images = 0, max_samples = 0;
   int step = 9;  // grid step of the keypoints
-  // Validation images on which the extraction time is measured against
-  // cv::SIFT's (SIFT costs more than the rest of an evaluation on all).
-  std::size_t timing_images = 8;
   // Forest size cap during the search (0: the genome's own), to keep an
   // evaluation affordable; the winner's model is trained at its own size.
   int max_trees = 0, max_depth = 0;
   FitnessWeights weights;
+  // The time term's per-module costs (the `cost_model:` block).
+  CostModel cost_model;
 };
 
 // Throws Error naming the file and key for unknown keys and bad values.

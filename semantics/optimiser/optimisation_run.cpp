@@ -57,7 +57,6 @@ nlohmann::json settings_json(const OptimiseOptions& o) {
           {"max_validation_images", g.max_validation_images},
           {"max_samples", g.max_samples},
           {"step", g.step},
-          {"timing_images", g.timing_images},
           {"max_trees", g.max_trees},
           {"max_depth", g.max_depth},
           {"fitness",
@@ -67,6 +66,7 @@ nlohmann::json settings_json(const OptimiseOptions& o) {
             {"time", g.weights.time},
             {"target_time_ratio", g.weights.target_time_ratio},
             {"size", g.weights.size}}},
+          {"cost_model", to_json(g.cost_model)},
           {"seeds", seeds}};
   // Only when set, so that the checkpoints of runs before the key existed still resume.
   if (g.folds > 1) settings["folds"] = g.folds;

@@ -1,9 +1,10 @@
-// Issue 18's scale-out check: the tiny GA (6 genomes x 2 generations on a
-// tiny synthetic dataset) under `mpirun -np 3 --oversubscribe` (rank 0 runs
-// the GA, ranks 1-2 evaluate) gives the same best genome and the same
-// fitness per generation as the threaded run. Needs a build with MPI and
-// mpirun on the PATH; skips with a message otherwise. Labelled regression:
-// the sanitizer pass does not run the MPI runtime.
+// Issue 18's scale-out check: configs/optimise.yaml scaled down to a tiny GA
+// (4 genomes x 2 generations on a tiny synthetic dataset; the shipped
+// fitness weights and cost model) under `mpirun -np 3 --oversubscribe` (rank
+// 0 runs the GA, ranks 1-2 evaluate) gives byte for byte the threaded run's
+// best genome and fitness per generation. Needs a build with MPI and mpirun
+// on the PATH; skips with a message otherwise. Labelled regression: the
+// sanitizer pass does not run the MPI runtime.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 
 #include "semantics/text.hpp"
 #include "tests/apps/cli_run.hpp"
+#include "tests/apps/optimise_test_config.hpp"
 #include "tests/semantics/synthetic_facades.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -29,8 +31,13 @@ TEST(OptimiseMpi, ThreeRanksGiveTheThreadedRunsResult) {
   test::TempDir dir;
   fs::create_directories(dir / "scratch");
   semantics::test_util::write_synthetic_dataset(dir / "data", 8, 1);
-  std::ofstream(dir / "tiny.yaml") << "population: 6\ngenerations: 2\nmax_samples: 2000\nmax_trees: 8\nmax_depth: 8\n"
-                                      "fitness:\n  time: 0\n";
+  std::ofstream(dir / "tiny.yaml") << test::scaled_down_shipped_config({{"population", "4"},
+                                                                        {"generations", "2"},
+                                                                        {"max_train_images", "6"},
+                                                                        {"max_validation_images", "2"},
+                                                                        {"max_samples", "2000"},
+                                                                        {"max_trees", "8"},
+                                                                        {"max_depth", "8"}});
   const auto arguments = [&](const fs::path& out) {
     return cat("-q optimise --dataset ", test::shell_quoted((dir / "data").string()), " --out ",
                test::shell_quoted(out.string()), " --config ", test::shell_quoted((dir / "tiny.yaml").string()),

@@ -81,7 +81,6 @@ TEST(FitnessInvariance, MeasuredOnlyWhenWeightedAndAddedToTheObjective) {
   options.max_samples = 500;
   options.max_trees = 4;
   options.max_depth = 4;
-  options.weights.time = 0.0;  // measured timings differ run to run
   options.weights.invariance = 0.0;
   const FitnessEvaluator without(split_train_list(dir.path(), options, 3), options, 3);
   const GenomeEvaluation plain = without.evaluate(Genome::thesis_best());
