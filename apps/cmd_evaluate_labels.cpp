@@ -36,6 +36,7 @@ struct Options {
   std::string genome;  // text, file or empty (thesis genome)
   std::filesystem::path json, confusion;
   std::filesystem::path model;  // test this model file instead of training
+  std::string keypoints = "grid";
 };
 
 std::string percent(double v) {
@@ -103,6 +104,7 @@ void run_model(const Options& o) {
 }
 
 void run(Options& o) {
+  o.evaluation.keypoints = semantics::parse_keypoint_source(o.keypoints, "--keypoints");
   // Output names and locations are checked now, not after an hour of
   // training: every output can be written (so that --model-out is not
   // written when --confusion or --json would fail after it).
@@ -194,6 +196,11 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
   cmd->add_flag("--grey", e.grey,
                 "Train and test on the photos turned grey (three equal channels, as a grey camera's frames reach "
                 "the semantic worker): the figures of a grey model");
+  cmd->add_option("--keypoints", options->keypoints,
+                  "Keypoints trained and tested on: grid (the thesis' regular grid, --step) or corners (FAST "
+                  "corners at full and half resolution: where the map's points are)")
+      ->check(CLI::IsMember({"grid", "corners"}))
+      ->capture_default_str();
   cmd->add_option("--context-scale", e.context_scale,
                   "Also classify each keypoint in the image shrunk to this scale and add the votes, as the semantic "
                   "worker does (configs/semantics.yaml context_scale, 0.25); 0 = full size only")

@@ -33,7 +33,7 @@ void test_forest(const std::vector<LabelledImage>& images, const LabelEvaluation
   const ClassifiedImages c = classify_labelled_images(
       images, options.step, descriptor, forest, result.confusion,
       [&](std::size_t i, const LoadedLabelledImage&, const LabelledKeypoints&, double) { progress.update(i + 1); },
-      load_labelled_image, options.context_scale);
+      load_labelled_image, options.context_scale, options.keypoints);
   result.unlabelled_keypoints += c.unlabelled;
   result.test_keypoints += c.keypoints;
   result.test_extraction_seconds += c.extraction_seconds;
@@ -75,11 +75,14 @@ double LabelEvaluation::forest_ms_per_image() const {
 ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& images, int step,
                                           PointDescriptor& descriptor, const RandomForest& forest,
                                           ConfusionMatrix& confusion, const AfterImage& after_image,
-                                          const LabelledImageLoader& load, double context_scale) {
+                                          const LabelledImageLoader& load, double context_scale,
+                                          KeypointSource keypoints) {
   ClassifiedImages out;
   for (std::size_t i = 0; i < images.size(); ++i) {
     const LoadedLabelledImage loaded = load(images[i]);
-    const LabelledKeypoints kps = labelled_keypoints(loaded.label, step);
+    const LabelledKeypoints kps = keypoints == KeypointSource::corners
+                                      ? labelled_keypoints(loaded.label, corner_keypoints(loaded.bgr))
+                                      : labelled_keypoints(loaded.label, step);
     out.unlabelled += kps.unlabelled;
     out.keypoints += kps.points.size();
     double extraction_s = 0.0;
@@ -131,6 +134,7 @@ LabelEvaluation evaluate_labels(const LabelEvaluationOptions& options) {
   training.max_samples = options.max_samples;
   training.seed = options.seed;
   training.grey = options.grey;
+  training.keypoints = options.keypoints;
   // Everything that can be checked cheaply is checked before the long work:
   // the test list here, the rest by train_model().
   const std::vector<LabelledImage> test =
@@ -209,6 +213,7 @@ Json to_json(const LabelEvaluation& r, const LabelEvaluationOptions& o) {
   j["descriptor"] = r.descriptor;
   j["descriptor_width"] = r.descriptor_width;
   j["genome"] = r.genome.to_string();
+  j["keypoints"] = keypoint_source_name(o.keypoints);
   j["grid_step"] = o.step;
   j["grid_border"] = kDefaultGridBorder;
   j["balance"] = if_trained(o.balance);

@@ -17,6 +17,7 @@
 #include "core/util/json.hpp"
 #include "semantics/descriptor/genome.hpp"
 #include "semantics/evaluation/confusion_matrix.hpp"
+#include "semantics/evaluation/corner_keypoints.hpp"
 #include "semantics/evaluation/facade_dataset.hpp"
 #include "semantics/evaluation/grid_keypoints.hpp"
 #include "semantics/evaluation/labelled_keypoints.hpp"
@@ -43,6 +44,9 @@ struct LabelEvaluationOptions {
   // those in the image shrunk to this scale, as the semantic worker does
   // (configs/semantics.yaml context_scale); 0 = full size only.
   double context_scale = 0.0;
+  // Where the keypoints are, in training and test: the thesis' grid (`step`)
+  // or FAST corners, where the tracker makes its map points.
+  KeypointSource keypoints = KeypointSource::grid;
 };
 
 struct LabelEvaluation {
@@ -87,7 +91,7 @@ LabelEvaluation evaluate_model(const LabelEvaluationOptions& options, const std:
 Json to_json(const LabelEvaluation& result, const LabelEvaluationOptions& options);
 
 // The test loop shared by `evaluate labels` and the optimiser's fitness:
-// each image's grid keypoints (`step`) described, classified by `forest` and
+// each image's keypoints (the grid of `step`, or its FAST corners) described, classified by `forest` and
 // counted in `confusion`. `after_image(index, loaded, keypoints,
 // extraction_seconds)`, if given, is called for every image once it is
 // counted (keypoints may be empty): progress, or timing a peer descriptor on
@@ -102,7 +106,8 @@ ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& imag
                                           PointDescriptor& descriptor, const RandomForest& forest,
                                           ConfusionMatrix& confusion, const AfterImage& after_image = {},
                                           const LabelledImageLoader& load = load_labelled_image,
-                                          double context_scale = 0.0);
+                                          double context_scale = 0.0,
+                                          KeypointSource keypoints = KeypointSource::grid);
 
 // Class names in id order (LabelMeFacade's nine).
 std::vector<std::string> evaluation_class_names();

@@ -293,6 +293,28 @@ TEST_F(SyntheticDataset, WholeRunLabelsTheSyntheticFacades) {
     EXPECT_THAT(text, HasSubstr(key));
 }
 
+// --keypoints corners: trained and tested where FAST finds corners (where the
+// map's points are), so the test count is the test images' labelled corners.
+TEST_F(SyntheticDataset, CornerRunTestsTheImagesCorners) {
+  LabelEvaluationOptions options;
+  options.dataset = dir.path();
+  options.descriptor = "edd";
+  options.keypoints = KeypointSource::corners;
+  options.max_test_images = 2;
+  const LabelEvaluation result = evaluate_labels(options);
+  std::size_t corners = 0;
+  std::vector<LabelledImage> test = read_facade_split(dir.path(), "test.txt");
+  test.resize(2);
+  for (const LabelledImage& image : test) {
+    const LoadedLabelledImage loaded = load_labelled_image(image);
+    corners += labelled_keypoints(loaded.label, corner_keypoints(loaded.bgr)).points.size();
+  }
+  ASSERT_GT(corners, 0u);
+  EXPECT_EQ(result.test_keypoints, corners);
+  EXPECT_EQ(result.confusion.total(), corners);
+  EXPECT_EQ(to_json(result, options)["keypoints"], "corners");
+}
+
 TEST_F(SyntheticDataset, BalancedRunEqualisesTheClasses) {
   LabelEvaluationOptions options;
   options.dataset = dir.path();
