@@ -31,7 +31,7 @@ std::shared_ptr<const OutputFolderLayout> pictures_layout(std::string descriptio
 
 }  // namespace
 
-OutputFileKind png_picture_kind() { return png_file("a PNG picture"); }
+OutputFileKind png_picture_kind() { return png_file("a PNG picture drawn by facadeslam"); }
 
 OutputFileKind map_file_kind() { return file_starting_with("a facadeslam map (.fslmap)", "FSLAMMAP"); }
 

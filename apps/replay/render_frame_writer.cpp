@@ -2,7 +2,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/util/atomic_write.hpp"
+#include "core/plot/png_file.hpp"
 #include "core/util/error.hpp"
 
 namespace facadeslam::apps {
@@ -57,10 +57,7 @@ void RenderFrameWriter::run() {
     try {
       // zlib's fastest level: the frames are many and large, and level 9
       // took ~100 ms per 1280x480 frame for files only ~6 % smaller.
-      write_file_atomically(item.png, [&](const std::filesystem::path& tmp) {
-        if (!cv::imwrite(tmp.string(), item.frame, {cv::IMWRITE_PNG_COMPRESSION, 1}))
-          throw Error(item.png.string() + ": cannot write the PNG");
-      });
+      plot::save_png(item.png, item.frame, {cv::IMWRITE_PNG_COMPRESSION, 1});
       video_.write(item.frame);
       sheet_.offer(item.caption, item.frame);
     } catch (...) {

@@ -3,30 +3,32 @@
 #include <algorithm>
 #include <cctype>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
+#include "core/util/png_signature.hpp"
 
 namespace facadeslam::plot {
 
-void save_png(const std::filesystem::path& path, const cv::Mat& image) {
+void save_png(const std::filesystem::path& path, const cv::Mat& image, const std::vector<int>& parameters) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".png") fail_file(path, "expected a file name ending in .png for the plot");
-  write_file_atomically(path, [&](const std::filesystem::path& tmp) {
-    bool written = false;
-    try {
-      // Maximum zlib effort: plots are committed under docs/, and level 9
-      // costs milliseconds on pictures of this size.
-      written = cv::imwrite(tmp.string(), image, {cv::IMWRITE_PNG_COMPRESSION, 9});
-    } catch (const cv::Exception& e) {
-      fail_file(path, "cannot write the PNG plot (" + e.err + ")");
-    }
-    if (!written) fail_file(path, "cannot write the PNG plot");
-  });
+  if (extension != ".png") fail_file(path, "expected a file name ending in .png for the picture");
+  std::vector<unsigned char> encoded;
+  try {
+    if (!cv::imencode(".png", image, encoded, parameters))
+      fail_file(path, "cannot encode the PNG picture");
+  } catch (const cv::Exception& e) {
+    fail_file(path, "cannot encode the PNG picture (" + e.err + ")");
+  }
+  const std::vector<unsigned char> png = sign_png(encoded);
+  write_atomically(
+      path, [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size())); },
+      /*binary=*/true);
 }
 
 }  // namespace facadeslam::plot

@@ -12,6 +12,7 @@
 
 #include "core/util/error.hpp"
 #include "core/util/path_checks.hpp"
+#include "core/util/png_signature.hpp"
 
 namespace facadeslam {
 namespace {
@@ -89,7 +90,7 @@ OutputFileKind file_starting_with(std::string description, std::string prefix) {
 }
 
 OutputFileKind png_file(std::string description) {
-  return file_starting_with(std::move(description), std::string("\x89PNG\r\n\x1a\n", 8));
+  return {std::move(description), [](const fs::path& path) { return is_signed_png(path); }};
 }
 
 OutputFileKind json_object_with_keys(std::string description, std::vector<std::string> keys) {

@@ -2,8 +2,8 @@
 // The one rule every command's outputs follow, checked before any work so
 // that a careless command line never destroys a user's files:
 //  - an output file replaces only a file of its own kind that this program
-//    wrote, recognised by its content (a report's keys, a map's magic, a PNG
-//    signature...), never a user's file that happens to have the name;
+//    wrote, recognised by its content (a report's keys, a map's magic, the
+//    text chunk in its PNGs...), never a user's file that happens to have the name;
 //  - an output folder, replaced as a whole (staged_folder.hpp), replaces only
 //    an earlier output folder each entry of which is one the command writes
 //    there (name and content), nothing else;
@@ -33,7 +33,8 @@ struct OutputFileKind {
 
 // Files that start with `prefix` (a magic number).
 OutputFileKind file_starting_with(std::string description, std::string prefix);
-// PNG pictures (the 8-byte PNG signature).
+// PNG pictures this program wrote (png_signature.hpp): a user's photo of
+// the same name is not one.
 OutputFileKind png_file(std::string description);
 // A JSON object holding every one of `keys` (none: any JSON object).
 OutputFileKind json_object_with_keys(std::string description, std::vector<std::string> keys);

@@ -136,7 +136,7 @@ void save_fitness_plot(const fs::path& path, const std::vector<GenerationSummary
   p.add_series("best", x, best, style);
   p.add_series("mean", x, mean, style);
   p.add_series("worst", x, worst, style);
-  write_file_atomically(path, [&](const fs::path& tmp) { p.save_png(tmp); });
+  p.save_png(path);
 }
 
 }  // namespace

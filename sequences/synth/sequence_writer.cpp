@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/camera/camera_yaml.hpp"
+#include "core/plot/png_file.hpp"
 #include "core/trajectory/trajectory_io.hpp"
 #include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
@@ -21,9 +22,7 @@ namespace fs = std::filesystem;
 const char* const kFrameFolders[] = {"rgb", "label", "depth"};
 
 void write_png(const fs::path& path, const cv::Mat& image, const std::vector<int>& parameters = {}) {
-  write_file_atomically(path, [&](const fs::path& tmp) {
-    if (!cv::imwrite(tmp.string(), image, parameters)) fail_file(path, "cannot write the PNG image");
-  });
+  plot::save_png(path, image, parameters);
 }
 
 // zlib level 1 makes 16-bit depth PNGs about 5x smaller than OpenCV's

@@ -7,7 +7,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/util/atomic_write.hpp"
+#include "core/plot/png_file.hpp"
 #include "core/util/error.hpp"
 #include "sequences/synth/contact_sheet.hpp"
 #include "sequences/synth/frame_synthesizer.hpp"
@@ -79,9 +79,7 @@ SynthSummary synthesize_sequence(const SceneSpec& spec, const std::filesystem::p
   summary.renderer = synthesizer.gl_renderer();
   writer.finish(report(spec, summary.renderer));
   if (!options.contact_sheet.empty())
-    write_file_atomically(options.contact_sheet, [&](const std::filesystem::path& tmp) {
-      if (!cv::imwrite(tmp.string(), sheet.image())) fail_file(options.contact_sheet, "cannot write the PNG image");
-    });
+    plot::save_png(options.contact_sheet, sheet.image(), {});
   summary.seconds = start.elapsed_s();
   return summary;
 }

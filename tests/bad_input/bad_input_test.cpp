@@ -349,6 +349,16 @@ const Case kCases[] = {
      "not a forest model"},
     {"out_render_map_over_its_input", "render-map --map-ply {mine}/photos/a.png --out {mine}/photos/a.png", 1,
      "--out is also the input --map-ply"},
+    // A PNG is replaced only when this program drew it (its text chunk), not a user's photo.
+    {"out_render_map_over_a_users_picture", "render-map --map-ply {file} --out {mine}/holiday.png", 1,
+     "not a PNG picture drawn by facadeslam"},
+    {"out_confusion_over_a_users_picture", "evaluate labels --dataset {data} --confusion {mine}/holiday.png", 1,
+     "not a PNG picture drawn by facadeslam"},
+    {"out_invariance_plot_over_a_users_picture", "evaluate invariance --images {data}/images --plot {mine}/holiday.png",
+     1, "not a PNG picture drawn by facadeslam"},
+    {"out_calibrate_plot_over_a_users_picture",
+     "calibrate --images {mine}/photos --out {case}/c.yaml --plot {mine}/holiday.png", 1,
+     "not a PNG picture drawn by facadeslam"},
     {"out_invariance_json_over_a_user_file", "evaluate invariance --images {data}/images --json {mine}/report.json", 1,
      "not an evaluate invariance report"},
     // Options (point 5): counts and seeds in range, no empty paths, clear lines.
@@ -568,6 +578,7 @@ void write_user_files(const fs::path& dir, const std::string& arguments) {
   fs::create_directories(mine / "photos");
   cv::imwrite((mine / "photos" / "a.png").string(), test::smooth_random_texture(64, 48, 3));
   cv::imwrite((mine / "photos" / "b.png").string(), test::smooth_random_texture(64, 48, 4));
+  cv::imwrite((mine / "holiday.png").string(), test::smooth_random_texture(64, 48, 5));
   test::write_text(dir / "plain-report" / "report.json", "my own notes, not a replay's\n");
   test::write_text(dir / "plain-synth" / "synth.json", "my own notes, not synth's\n");
   if (arguments.find("{myseq}") != std::string::npos) {

@@ -8,7 +8,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/plot/png_file.hpp"
 #include "core/util/error.hpp"
+#include "core/util/png_signature.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace facadeslam::plot {
@@ -186,6 +188,25 @@ TEST(LinePlot, NonPngNameIsAnError) {
   EXPECT_THROW(two_series_plot().save_png(dir / "plot.jpg"), Error);
   EXPECT_THROW(two_series_plot().save_png(dir / "plot"), Error);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+// Every PNG the program writes is signed as its own (output_policy.hpp
+// replaces only those) and reads back pixel for pixel, 16-bit ones too.
+TEST(PngFile, IsSignedAndReadsBack) {
+  test::TempDir dir;
+  cv::Mat picture(40, 60, CV_8UC3);
+  cv::randu(picture, 0, 255);
+  cv::Mat depth(40, 60, CV_16UC1);
+  cv::randu(depth, 0, 65535);
+  save_png(dir / "picture.png", picture);
+  save_png(dir / "depth.png", depth, {cv::IMWRITE_PNG_COMPRESSION, 1});
+  EXPECT_TRUE(is_signed_png(dir / "picture.png"));
+  EXPECT_TRUE(is_signed_png(dir / "depth.png"));
+  EXPECT_EQ(cv::norm(cv::imread((dir / "picture.png").string(), cv::IMREAD_UNCHANGED), picture, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(cv::imread((dir / "depth.png").string(), cv::IMREAD_UNCHANGED), depth, cv::NORM_INF), 0.0);
+  ASSERT_TRUE(cv::imwrite((dir / "photo.png").string(), picture));
+  EXPECT_FALSE(is_signed_png(dir / "photo.png")) << "a PNG another program wrote";
+  EXPECT_FALSE(is_signed_png(dir / "missing.png"));
 }
 
 TEST(LinePlot, MismatchedSeriesIsAnError) {

@@ -2,6 +2,7 @@
 // folders only earlier outputs, never an input, and two outputs of one run
 // never collide.
 #include "core/util/output_policy.hpp"
+#include "core/util/png_signature.hpp"
 
 #include <fstream>
 
@@ -23,7 +24,14 @@ void put_file(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-const std::string kPng("\x89PNG\r\n\x1a\nrest of a picture", 25);
+// A PNG's signature and header chunk (its CRC not checked here), then data.
+const std::string kUsersPng = std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16) + std::string(13 + 4, '\x01') +
+                              std::string("\0\0\0\x04IDATdataCRC!", 20);
+std::string signed_png(const std::string& png) {
+  const std::vector<unsigned char> bytes = sign_png(std::vector<unsigned char>(png.begin(), png.end()));
+  return std::string(bytes.begin(), bytes.end());
+}
+const std::string kPng = signed_png(kUsersPng);
 
 OutputFileKind report_kind() { return json_object_with_keys("a test report", {"frames", "mode"}); }
 OutputFileKind map_kind() { return file_starting_with("a test map", "FSLAMMAP"); }
@@ -47,6 +55,7 @@ TEST(OutputFileKinds, AreRecognisedByContentNotByName) {
   put_file(dir / "other.json", "{\"frames\": 3}");
   put_file(dir / "a.png", kPng);
   put_file(dir / "fake.png", "not a picture");
+  put_file(dir / "photo.png", kUsersPng);
   put_file(dir / "t.txt", "# timestamp tx ty tz qx qy qz qw\n1.0 0 0 0 0 0 0 1\n\n2.5 1 2 3 0 0 0 1\n");
   put_file(dir / "notes.txt", "1.0 is a number but\nthis line is not\n");
   put_file(dir / "map.fslmap", std::string("FSLAMMAP\x04\0\0\0", 12));
@@ -58,6 +67,8 @@ TEST(OutputFileKinds, AreRecognisedByContentNotByName) {
   EXPECT_TRUE(json_object_with_keys("any JSON object", {}).recognises(dir / "other.json"));
   EXPECT_TRUE(png_file("png").recognises(dir / "a.png"));
   EXPECT_FALSE(png_file("png").recognises(dir / "fake.png"));
+  EXPECT_FALSE(png_file("png").recognises(dir / "photo.png")) << "a PNG this program did not write";
+  EXPECT_THROW(sign_png(std::vector<unsigned char>(5, 0)), Error);
   EXPECT_TRUE(numbered_lines("trajectory").recognises(dir / "t.txt"));
   EXPECT_FALSE(numbered_lines("trajectory").recognises(dir / "notes.txt"));
   EXPECT_TRUE(map_kind().recognises(dir / "map.fslmap"));
