@@ -47,21 +47,6 @@ void check_keypoint(const cv::Point2f& kp, std::size_t index, cv::Size size) {
   throw Error(msg.str());
 }
 
-// Modules whose values are means and sigmas of planes (the strip shares
-// their column sums).
-constexpr Module kStatisticsModules[] = {Module::mean_std, Module::gevers_l, Module::gevers_c, Module::geusebroek,
-                                         Module::edge_distance};
-
-template <std::size_t N>
-ActivationMask restricted_to(const ActivationMask& activation, const Module (&modules)[N]) {
-  ActivationMask out;
-  for (const Module m : modules)
-    for (int i = 0; i < module_size(m); ++i) {
-      const auto bit = static_cast<std::size_t>(module_offset(m) + i);
-      out.set(bit, activation.test(bit));
-    }
-  return out;
-}
 
 // The angle planes among `planes` (read by the gradient-region module).
 PlaneSet angle_planes(const PlaneSet& planes) {

@@ -68,6 +68,16 @@ std::uint64_t module_bits(const ActivationMask& mask, Module m) {
   return bits;
 }
 
+ActivationMask restricted_to(const ActivationMask& mask, std::span<const Module> modules) {
+  ActivationMask out;
+  for (const Module m : modules)
+    for (int i = 0; i < module_size(m); ++i) {
+      const auto bit = static_cast<std::size_t>(module_offset(m) + i);
+      out.set(bit, mask.test(bit));
+    }
+  return out;
+}
+
 Module module_of_value(int value_index) {
   if (value_index < 0 || value_index >= kValueCount)
     throw std::out_of_range("value index " + std::to_string(value_index) + " is outside 0..184");

@@ -7,6 +7,7 @@
 #include <bitset>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -62,6 +63,15 @@ using ActivationMask = std::bitset<kValueCount>;
 
 // The module's slice of `mask`: bit i = the module's i-th value.
 std::uint64_t module_bits(const ActivationMask& mask, Module m);
+
+// `mask` with only the values of `modules` kept.
+ActivationMask restricted_to(const ActivationMask& mask, std::span<const Module> modules);
+
+// Modules whose values are means and sigmas of planes: extraction sums one
+// strip per plane they read (their column sums are shared), and the GA's
+// cost model counts it so.
+inline constexpr std::array<Module, 5> kStatisticsModules = {Module::mean_std, Module::gevers_l, Module::gevers_c,
+                                                             Module::geusebroek, Module::edge_distance};
 
 // The module a value index (0..184) belongs to.
 Module module_of_value(int value_index);

@@ -15,17 +15,6 @@ namespace {
 
 constexpr int kCalibrationRadius = 10;
 
-// `activation` with only the values of `modules` kept.
-ActivationMask restricted_to(const ActivationMask& activation, std::initializer_list<Module> modules) {
-  ActivationMask out;
-  for (const Module m : modules)
-    for (int i = 0; i < module_size(m); ++i) {
-      const auto bit = static_cast<std::size_t>(module_offset(m) + i);
-      out.set(bit, activation.test(bit));
-    }
-  return out;
-}
-
 // Bits of a channel-major module that belong to channel c.
 std::uint64_t channel_bits(std::uint64_t bits, int per_channel, int c) {
   return (bits >> (per_channel * c)) & ((std::uint64_t{1} << per_channel) - 1);
@@ -62,8 +51,7 @@ CostBreakdown modelled_cost(const DescriptorParams& p, const CostModel& m) {
   // The walk over the keypoints, whichever values are active.
   double keypoints = p.activation.any() ? m.position : 0.0;
   // The statistics modules sum one strip per plane they read.
-  const PlaneSet statistics = required_planes(restricted_to(
-      p.activation, {Module::mean_std, Module::gevers_l, Module::gevers_c, Module::geusebroek, Module::edge_distance}));
+  const PlaneSet statistics = required_planes(restricted_to(p.activation, kStatisticsModules));
   keypoints += m.statistics_plane * static_cast<double>(statistics.count()) * scaled(m.statistics_exponent);
   double moments = 0.0, singular = 0.0, gradient = 0.0;
   for (int c = 0; c < 3; ++c) {
