@@ -29,4 +29,11 @@ cv::Mat facade_image(cv::Size size, std::string* source) {
   return image;
 }
 
+std::vector<cv::Point2f> grid_points(cv::Size size, int step) {
+  std::vector<cv::Point2f> points;
+  for (int y = 0; y < size.height; y += step)
+    for (int x = 0; x < size.width; x += step) points.emplace_back(static_cast<float>(x), static_cast<float>(y));
+  return points;
+}
+
 }  // namespace facadeslam::bench

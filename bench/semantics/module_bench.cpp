@@ -92,12 +92,7 @@ const cv::Mat& frame() {
 }
 
 const std::vector<cv::Point2f>& grid_keypoints() {
-  static const std::vector<cv::Point2f> points = [] {
-    std::vector<cv::Point2f> p;
-    for (int y = 0; y < frame().rows; y += 9)
-      for (int x = 0; x < frame().cols; x += 9) p.emplace_back(static_cast<float>(x), static_cast<float>(y));
-    return p;
-  }();
+  static const std::vector<cv::Point2f> points = bench::grid_points(frame().size());
   return points;
 }
 
