@@ -74,13 +74,13 @@ struct SemanticsOptions {
   // out, bundle adjustment hardly sees them (0.224 % with them at full
   // weight there): leaving them out of it too keeps the two consistent. Swaying trees are noise that the weights
   // handle, and trees that stand still carry the pose where little else
-  // does (the demo): docs/benchmarks.md, session 24.
+  // does (the demo): docs/benchmarks.md.
   ClassSet moving_classes{1u << 2};
   // ... and so are points in regions the semantic worker finds dense with
   // calls of a moving class (semantics/worker/moving_regions.hpp): the
   // forest calls few of a close-up car's points car one by one, many of its
   // region's. street-traffic with the forest's labels 8.70 -> 0.23 % (its
-  // static twin 0.30 %); step 0: no regions (docs/benchmarks.md, session 25).
+  // static twin 0.30 %); step 0: no regions (docs/benchmarks.md).
   semantics::MovingRegionOptions moving_regions;
 
   // prior^weight per class, scaled so the largest is 1.

@@ -90,7 +90,7 @@ class MapPoint {
   // own), what the outputs show. own_label() is what the point's own views
   // say, what the tracker weighs points by: fused labels call more of a
   // still tree vegetation, and the demo's threaded ATE went 0.46-0.48 ->
-  // 0.49-0.50 % with them (docs/benchmarks.md, session 22).
+  // 0.49-0.50 % with them (docs/benchmarks.md).
   SemanticLabel label() const;
   SemanticLabel own_label() const;
   // The vote sums behind the labels. add_votes fuses one more observation's

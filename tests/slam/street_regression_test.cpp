@@ -69,8 +69,8 @@ TEST(StreetRegression, StreetWalkLosesNoFrameAndAteWithinOnePercent) {
 // the tracker, its parked and oncoming cars left out of tracking and bundle
 // adjustment (SemanticsOptions::moving_classes). 0.046 % (online poses);
 // without labels 0.019 %; with the tracker weighing cars down to 0.1 like
-// the trees and bundle adjustment taking them at full weight (session 23's
-// code) 1.90 % (tracker seeds 2, 3: 1.01, 0.37 %).
+// the trees and bundle adjustment taking them at full weight (the earlier
+// policy) 1.90 % (tracker seeds 2, 3: 1.01, 0.37 %).
 TEST(StreetRegression, StreetDriveLosesNoFrameAndAteWithinHalfAPercent) {
   FACADESLAM_REQUIRE_SHARED_DATA("labelmefacade");
   SlamOptions options = test::synchronous_options();
