@@ -64,6 +64,8 @@ void Tracker::start(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Mat
 
 void Tracker::reset() {
   started_ = false;
+  points_.clear();
+  points_revision_ = 0;
   lost_frames_ = 0;
   velocity_.setZero();
   descriptor_relocaliser_.clear();
@@ -201,7 +203,8 @@ int Tracker::verify_unreliable(PoseUpdateResult& update, std::vector<PoseMeasure
 std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,
                                                     bool coarse) {
   const Stopwatch snapshot_watch;
-  const std::vector<PointSnapshot> points = map_.snapshot_points();
+  map_.refresh_points_snapshot(points_, points_revision_);
+  const std::vector<PointSnapshot>& points = points_;
   result.timings.snapshot_ms += snapshot_watch.elapsed_ms();
   // One row index of the frame's corners, shared by every search of both stages.
   const patch::SearchImage image(*frame.pyramid);

@@ -140,6 +140,9 @@ class Tracker {
   std::size_t last_keyframe_frame_ = 0;
   bool last_keyframe_turned_ = false;
   int found_at_keyframe_ = 0;  // most points found in a frame since the last keyframe request
+  // The map's points as of Map revision points_revision_ (Map::refresh_points_snapshot).
+  std::vector<PointSnapshot> points_;
+  std::uint64_t points_revision_ = 0;
 };
 
 }  // namespace facadeslam

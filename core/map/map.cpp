@@ -75,6 +75,7 @@ void Map::restore_next_ids(std::uint64_t keyframe, std::uint64_t point) {
 void Map::add(const std::vector<std::shared_ptr<KeyFrame>>& keyframes,
               const std::vector<std::shared_ptr<MapPoint>>& points, const std::vector<Observation>& observations) {
   std::unique_lock lock(mutex_);
+  ++revision_;
   for (const auto& kf : keyframes) keyframes_.emplace(kf->id(), kf);
   for (const auto& p : points) points_.emplace(p->id(), p);
   for (const auto& o : observations) o.keyframe->measurements_[o.point] = o.measurement;
@@ -113,6 +114,17 @@ std::vector<PointSnapshot> Map::snapshot_points() const {
   return out;
 }
 
+bool Map::refresh_points_snapshot(std::vector<PointSnapshot>& points, std::uint64_t& revision) const {
+  std::shared_lock lock(mutex_);
+  if (revision == revision_) return false;
+  points.clear();
+  points.reserve(points_.size());
+  for (const auto& [id, p] : points_)
+    if (!p->is_bad()) points.push_back({p, p->source(), p->geometry(), p->view(), p->view_geometry()});
+  revision = revision_;
+  return true;
+}
+
 std::shared_ptr<KeyFrame> Map::keyframe(KeyFrame::Id id) const {
   return read([&](const MapView& map) { return map.keyframe(id); });
 }
@@ -133,6 +145,7 @@ std::size_t Map::point_count() const {
 
 std::vector<MapPoint::Id> Map::remove_bad_points() {
   std::unique_lock lock(mutex_);
+  ++revision_;
   std::vector<MapPoint::Id> removed;
   for (auto it = points_.begin(); it != points_.end();) {
     if (it->second->is_bad()) {
@@ -155,6 +168,7 @@ std::map<KeyFrame::Id, CulledKeyFrame> Map::culled_keyframes() const {
 
 void Map::clear() {
   std::unique_lock lock(mutex_);
+  ++revision_;
   keyframes_.clear();
   points_.clear();
   culled_.clear();

@@ -149,6 +149,7 @@ class Map {
   template <class F>
   decltype(auto) update(F&& f) {
     std::unique_lock lock(mutex_);
+    ++revision_;
     MapEditor editor(*this);
     return f(editor);
   }
@@ -158,6 +159,12 @@ class Map {
   std::vector<std::shared_ptr<MapPoint>> points() const;
   std::vector<KeyFrameSnapshot> snapshot_keyframes() const;
   std::vector<PointSnapshot> snapshot_points() const;  // good points only
+  // Refills `points` with snapshot_points() unless the map is unchanged since
+  // the call that set `revision` (start it at 0); returns whether it did.
+  // Every change (add, update, remove_bad_points, clear) counts. The tracker
+  // keeps its snapshot between keyframes this way instead of copying the
+  // whole map every frame.
+  bool refresh_points_snapshot(std::vector<PointSnapshot>& points, std::uint64_t& revision) const;
   std::shared_ptr<KeyFrame> keyframe(KeyFrame::Id id) const;
   std::shared_ptr<MapPoint> point(MapPoint::Id id) const;
 
@@ -187,6 +194,7 @@ class Map {
   std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>> keyframes_;
   std::map<MapPoint::Id, std::shared_ptr<MapPoint>> points_;
   std::map<KeyFrame::Id, CulledKeyFrame> culled_;
+  std::uint64_t revision_ = 1;  // under mutex_: changes with every exclusive section
   std::atomic<std::uint64_t> next_keyframe_id_{0};
   std::atomic<std::uint64_t> next_point_id_{0};
 };

@@ -108,6 +108,32 @@ TEST(Map, BadPointsLeaveSnapshotsAndAreRemovedWithTheirMeasurements) {
   }
 }
 
+// The tracker's snapshot is refreshed only when the map changed: every
+// exclusive section (update, add, remove_bad_points, clear) counts.
+TEST(Map, APointsSnapshotIsRefreshedOnlyAfterAChange) {
+  Map map;
+  test::build_test_map(map, 6);
+  std::vector<PointSnapshot> points;
+  std::uint64_t revision = 0;
+  EXPECT_TRUE(map.refresh_points_snapshot(points, revision));
+  EXPECT_EQ(points.size(), 6u);
+  EXPECT_FALSE(map.refresh_points_snapshot(points, revision)) << "nothing changed";
+  map.read([](const MapView&) {});
+  EXPECT_FALSE(map.refresh_points_snapshot(points, revision)) << "a read changes nothing";
+  const auto bad = map.points()[1];
+  map.update([&](MapEditor& edit) { edit.mark_bad(*bad); });
+  EXPECT_TRUE(map.refresh_points_snapshot(points, revision));
+  EXPECT_EQ(points.size(), 5u);
+  map.remove_bad_points();
+  EXPECT_TRUE(map.refresh_points_snapshot(points, revision));
+  map.add({}, {std::make_shared<MapPoint>(map.new_point_id(), map.points().front()->source(), PointGeometry{})});
+  EXPECT_TRUE(map.refresh_points_snapshot(points, revision));
+  EXPECT_EQ(points.size(), 6u);
+  map.clear();
+  EXPECT_TRUE(map.refresh_points_snapshot(points, revision));
+  EXPECT_TRUE(points.empty());
+}
+
 TEST(Map, ObservationsArePublishedWithTheirPoints) {
   Map map;
   test::build_test_map(map, 2);
