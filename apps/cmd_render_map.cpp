@@ -143,7 +143,9 @@ void add_render_map_command(CLI::App& app) {
   cmd->add_option("--map-ply", o->map_ply, "The labelled point cloud a replay wrote (OUT/map.ply)")->required();
   cmd->add_option("--keyframes", o->keyframes, "Draw the keyframe cameras of OUT/keyframes.txt (TUM)");
   cmd->add_option("--trajectory", o->trajectory, "Draw the camera path of OUT/trajectory.txt (TUM)");
-  cmd->add_option("--out", o->out, "PNG file to write (replaces only a PNG picture facadeslam drew)")->required()->check(kNonEmptyPath);
+  cmd->add_option("--out", o->out, "PNG file to write (replaces only a PNG picture facadeslam drew)")
+      ->required()
+      ->check(kNonEmptyPath);
   cmd->add_option("--view", o->view,
                   "oblique: from behind the cameras and above; top: straight down (up = the keyframes' mean -y axis)")
       ->check(CLI::IsMember({"oblique", "top"}))

@@ -105,22 +105,24 @@ std::vector<KeyFrameSnapshot> Map::snapshot_keyframes() const {
   return out;
 }
 
-std::vector<PointSnapshot> Map::snapshot_points() const {
-  std::shared_lock lock(mutex_);
-  std::vector<PointSnapshot> out;
+void Map::copy_good_points(std::vector<PointSnapshot>& out) const {
+  out.clear();
   out.reserve(points_.size());
   for (const auto& [id, p] : points_)
     if (!p->is_bad()) out.push_back({p, p->source(), p->geometry(), p->view(), p->view_geometry()});
+}
+
+std::vector<PointSnapshot> Map::snapshot_points() const {
+  std::shared_lock lock(mutex_);
+  std::vector<PointSnapshot> out;
+  copy_good_points(out);
   return out;
 }
 
 bool Map::refresh_points_snapshot(std::vector<PointSnapshot>& points, std::uint64_t& revision) const {
   std::shared_lock lock(mutex_);
   if (revision == revision_) return false;
-  points.clear();
-  points.reserve(points_.size());
-  for (const auto& [id, p] : points_)
-    if (!p->is_bad()) points.push_back({p, p->source(), p->geometry(), p->view(), p->view_geometry()});
+  copy_good_points(points);
   revision = revision_;
   return true;
 }

@@ -190,6 +190,9 @@ class Map {
   friend class MapView;
   friend class MapEditor;
 
+  // The good points' snapshots into `out` (emptied first); mutex_ held by the caller.
+  void copy_good_points(std::vector<PointSnapshot>& out) const;
+
   mutable std::shared_mutex mutex_;
   std::map<KeyFrame::Id, std::shared_ptr<KeyFrame>> keyframes_;
   std::map<MapPoint::Id, std::shared_ptr<MapPoint>> points_;

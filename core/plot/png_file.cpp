@@ -26,9 +26,10 @@ void save_png(const std::filesystem::path& path, const cv::Mat& image, const std
     fail_file(path, "cannot encode the PNG picture (" + e.err + ")");
   }
   const std::vector<unsigned char> png = sign_png(encoded);
-  write_atomically(
-      path, [&](std::ostream& out) { out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size())); },
-      /*binary=*/true);
+  const auto write_bytes = [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  };
+  write_atomically(path, write_bytes, /*binary=*/true);
 }
 
 }  // namespace facadeslam::plot

@@ -47,7 +47,6 @@ void check_keypoint(const cv::Point2f& kp, std::size_t index, cv::Size size) {
   throw Error(msg.str());
 }
 
-
 // The angle planes among `planes` (read by the gradient-region module).
 PlaneSet angle_planes(const PlaneSet& planes) {
   PlaneSet out;

@@ -21,14 +21,11 @@ namespace fs = std::filesystem;
 
 const char* const kFrameFolders[] = {"rgb", "label", "depth"};
 
-void write_png(const fs::path& path, const cv::Mat& image, const std::vector<int>& parameters = {}) {
-  plot::save_png(path, image, parameters);
-}
-
 // zlib level 1 makes 16-bit depth PNGs about 5x smaller than OpenCV's
 // default settings (smooth surfaces compress well), in less time; colour
 // images with pixel noise do best with the default.
 const std::vector<int> kDepthPng = {cv::IMWRITE_PNG_COMPRESSION, 1};
+const std::vector<int> kColourPng = {};  // OpenCV's default settings
 
 std::string list_text(const SceneSpec& spec, int frames, const std::string& folder, const std::string& what) {
   std::ostringstream out;
@@ -75,9 +72,9 @@ void SequenceWriter::write(const SynthFrame& frame) {
     throw Error("synth: frames must be written in order (expected frame " + std::to_string(written_) + ", got " +
                 std::to_string(frame.index) + ")");
   const std::string name = frame_file_name(frame.index);
-  write_png(folder_ / "rgb" / name, frame.colour);
-  write_png(folder_ / "label" / name, colours_from_label_ids(frame.labels));
-  write_png(folder_ / "depth" / name, frame.depth_mm, kDepthPng);
+  plot::save_png(folder_ / "rgb" / name, frame.colour, kColourPng);
+  plot::save_png(folder_ / "label" / name, colours_from_label_ids(frame.labels), kColourPng);
+  plot::save_png(folder_ / "depth" / name, frame.depth_mm, kDepthPng);
   trajectory_.push_back({frame.timestamp, frame.T_w_c});
   ++written_;
 }
