@@ -26,7 +26,7 @@ void put_file(const fs::path& path, const std::string& bytes) {
 
 // A PNG's signature and header chunk (its CRC not checked here), then data.
 const std::string kUsersPng = std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16) + std::string(13 + 4, '\x01') +
-                              std::string("\0\0\0\x04IDATdataCRC!", 20);
+                              std::string("\0\0\0\x04IDATdataCRC!", 16);
 std::string signed_png(const std::string& png) {
   const std::vector<unsigned char> bytes = sign_png(std::vector<unsigned char>(png.begin(), png.end()));
   return std::string(bytes.begin(), bytes.end());
