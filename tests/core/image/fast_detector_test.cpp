@@ -3,6 +3,7 @@
 #include <set>
 
 #include <gtest/gtest.h>
+#include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/util/error.hpp"
@@ -80,6 +81,70 @@ TEST(FastDetector, BorderDropsCornersNearTheEdge) {
     EXPECT_GE(c.y, 10);
     EXPECT_LT(c.x, 118);
     EXPECT_LT(c.y, 118);
+  }
+}
+
+// FAST-9 by its definition, written for clarity: the score is the largest t
+// for which 9 contiguous circle pixels are all brighter than centre + t or
+// all darker than centre - t, plus the circle's summed absolute difference
+// / 4096 to break ties; a corner is a candidate whose score beats its earlier
+// raster neighbours and is not beaten by its later ones.
+float reference_score(const cv::Mat& img, int x, int y) {
+  static constexpr int kCircle[16][2] = {{0, -3}, {1, -3}, {2, -2}, {3, -1}, {3, 0},  {3, 1},  {2, 2},  {1, 3},
+                                         {0, 3},  {-1, 3}, {-2, 2}, {-3, 1}, {-3, 0}, {-3, -1}, {-2, -2}, {-1, -3}};
+  int d[16];
+  unsigned sad = 0;
+  for (int i = 0; i < 16; ++i) {
+    d[i] = img.at<std::uint8_t>(y + kCircle[i][1], x + kCircle[i][0]) - img.at<std::uint8_t>(y, x);
+    sad += static_cast<unsigned>(std::abs(d[i]));
+  }
+  int best = 0;
+  for (int start = 0; start < 16; ++start) {
+    int lo = 255, hi = -255;
+    for (int j = 0; j < 9; ++j) {
+      lo = std::min(lo, d[(start + j) % 16]);
+      hi = std::max(hi, d[(start + j) % 16]);
+    }
+    best = std::max({best, lo, -hi});
+  }
+  return static_cast<float>(best) + static_cast<float>(sad) / 4096.f;
+}
+
+TEST(FastDetector, MatchesTheDefinitionCornerForCorner) {
+  // Noise over squares: tens of thousands of candidates, score ties on the
+  // squares' clean edges, a candidate count that is not a multiple of 8.
+  cv::Mat img = squares_image({333, 251}, 12, {0, 0, 333, 251});
+  cv::Mat noise(img.size(), CV_8UC1);
+  cv::randu(noise, 0, 40);
+  img.setTo(0, squares_image({333, 251}, 50, {20, 20, 300, 200}) < 100);
+  img += noise;
+  std::vector<cv::KeyPoint> candidates;
+  cv::FAST(img, candidates, 10, false);
+  ASSERT_GT(candidates.size(), 5000u);
+  cv::Mat score(img.size(), CV_32FC1, cv::Scalar(0));
+  for (const auto& kp : candidates)
+    score.at<float>(static_cast<int>(kp.pt.y), static_cast<int>(kp.pt.x)) =
+        reference_score(img, static_cast<int>(kp.pt.x), static_cast<int>(kp.pt.y));
+  std::vector<Corner> expected;
+  for (int y = 4; y < img.rows - 4; ++y)
+    for (int x = 4; x < img.cols - 4; ++x) {
+      const float s = score.at<float>(y, x);
+      if (s == 0.f) continue;
+      bool maximum = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const bool earlier = dy < 0 || (dy == 0 && dx < 0);
+          const float n = score.at<float>(y + dy, x + dx);
+          if ((dy != 0 || dx != 0) && (earlier ? n >= s : n > s)) maximum = false;
+        }
+      if (maximum) expected.push_back({x, y, s});
+    }
+  const auto corners = detect_fast(img, {10, 32, 0, 4});
+  ASSERT_EQ(corners.size(), expected.size());
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    EXPECT_EQ(corners[i].x, expected[i].x);
+    EXPECT_EQ(corners[i].y, expected[i].y);
+    EXPECT_EQ(corners[i].score, expected[i].score) << "at (" << corners[i].x << ", " << corners[i].y << ")";
   }
 }
 
