@@ -77,7 +77,7 @@ class MapMaker {
   // Keyframe candidates taken from the queue and dealt with (made keyframes
   // or refused), since construction. wait_for_candidates(n) blocks until n
   // are, or the thread is not running: a replay of files lets the tracker
-  // wait for each keyframe it asks for (SlamOptions::wait_for_keyframes).
+  // wait for each keyframe it asks for (SlamOptions::max_keyframes_behind).
   std::size_t candidates_done() const;
   void wait_for_candidates(std::size_t count) const;
 

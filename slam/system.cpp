@@ -181,7 +181,8 @@ void System::reset_map(const Frame& frame) {
                tracker_.lost_frames(), map_.keyframe_count(), map_.point_count());
   // The threads first: nothing may touch the map while it is emptied. What
   // they had queued belongs to the old map.
-  queue_.reopen();
+  queue_.clear();
+  new_points_.clear();
   if (!options_.synchronous) {
     map_maker_.stop();
     if (worker_) worker_->stop();

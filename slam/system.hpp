@@ -1,7 +1,7 @@
 #pragma once
 // The SLAM system behind `facadeslam replay`: one Map shared by the tracker
-// (run on the caller's thread, frame by frame), the map maker (its own thread,
-// or inline in synchronous mode) and, later, the semantic worker.
+// (run on the caller's thread, frame by frame), the map maker and the
+// semantic worker (each on its own thread, or inline in synchronous mode).
 //
 // Before a map exists the system starts up automatically (initialiser.hpp):
 // it tracks the corners of a reference frame until a frame with enough

@@ -60,8 +60,16 @@ class BlockingQueue {
     return closed_;
   }
 
-  // Empties the queue and opens it again (a map reset: the consumer thread
-  // has been joined, and what was queued belonged to the old map).
+  // Drops what is queued; producers and consumers carry on (a map reset:
+  // what was queued belongs to the old map, and stopping the consumer must
+  // not first work through it).
+  void clear() {
+    std::lock_guard lock(mutex_);
+    items_.clear();
+  }
+
+  // Empties the queue and opens it again. Only once the consumer thread has
+  // been joined: a consumer still waiting would miss the close it was woken for.
   void reopen() {
     std::lock_guard lock(mutex_);
     items_.clear();

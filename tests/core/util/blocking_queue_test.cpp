@@ -58,5 +58,24 @@ TEST(BlockingQueue, CloseWakesAWaitingConsumer) {
   EXPECT_TRUE(queue.closed());
 }
 
+// A map reset: what was queued is dropped, the consumer is stopped without
+// working through it, and the queue opens again for the new map.
+TEST(BlockingQueue, ClearDropsTheQueueAndReopenFollowsTheJoin) {
+  BlockingQueue<int> queue;
+  for (int i = 0; i < 5; ++i) queue.push(i);
+  queue.clear();
+  EXPECT_TRUE(queue.empty());
+  EXPECT_FALSE(queue.closed());
+  std::vector<int> received{-1};
+  std::thread consumer([&] { received = consume(queue); });
+  queue.close();
+  consumer.join();
+  EXPECT_TRUE(received.empty()) << "the cleared items reached the consumer";
+  queue.reopen();
+  queue.push(7);
+  EXPECT_FALSE(queue.closed());
+  EXPECT_EQ(queue.try_pop(), std::optional<int>(7));
+}
+
 }  // namespace
 }  // namespace facadeslam
