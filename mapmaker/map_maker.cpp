@@ -300,8 +300,7 @@ void MapMaker::remove_outlier_points() {
                                     .max_found_ratio = options_.outlier_max_found_ratio,
                                     .grace_keyframes = kSingleViewGraceKeyframes};
   IsLeftOut left_out;
-  if (options_.left_out_of_ba.any())
-    left_out = [this](const MapPoint& point) { return options_.left_out_of_ba.contains(point); };
+  if (options_.labels.moving.any()) left_out = [this](const MapPoint& point) { return options_.labels.left_out(point); };
   const std::vector<std::shared_ptr<MapPoint>> outliers =
       points_to_cull(map_.keyframes(), map_.points(), culling, left_out);
   if (!outliers.empty())
@@ -415,8 +414,8 @@ void MapMaker::run() {
 }
 
 PointWeight MapMaker::ba_point_weight() const {
-  if (!options_.left_out_of_ba.any()) return {};
-  return [this](const MapPoint& point) { return options_.left_out_of_ba.contains(point) ? 0.0 : 1.0; };
+  if (!options_.labels.moving.any()) return {};
+  return [this](const MapPoint& point) { return options_.labels.ba_weight(point); };
 }
 
 }  // namespace facadeslam

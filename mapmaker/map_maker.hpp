@@ -95,7 +95,7 @@ class MapMaker {
   // first (the gauge of every bundle adjustment) nor `newest`.
   void cull_redundant_keyframes(KeyFrame::Id newest);
   void update_depth_stats(KeyFrame& keyframe);
-  // Each point's weight in bundle adjustment (0: MapMakerOptions::left_out_of_ba);
+  // Each point's weight in bundle adjustment (LabelPolicy::ba_weight);
   // none when labels are ignored.
   PointWeight ba_point_weight() const;
   // The keyframes `keyframe` searches for new points against, the near

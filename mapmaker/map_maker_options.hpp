@@ -3,7 +3,7 @@
 // `mapmaker:` section of configs/slam.yaml.
 #include <array>
 
-#include "core/map/unreliable_labels.hpp"
+#include "core/map/label_policy.hpp"
 #include "mapmaker/ba/ba_selection.hpp"
 #include "mapmaker/ba/bundle_adjuster.hpp"
 #include "mapmaker/depth_prior_points.hpp"
@@ -74,7 +74,7 @@ struct MapMakerOptions {
   // Label-aware bundle adjustment (set from configs/semantics.yaml when
   // semantics are on): the measurements of points with these labels (things
   // that move, which the tracker leaves out too) are left out.
-  UnreliableLabels left_out_of_ba;  // no classes: labels are ignored
+  LabelPolicy labels;  // left-out points (LabelPolicy::left_out); no classes: labels are ignored
 };
 
 }  // namespace facadeslam

@@ -144,8 +144,9 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
   options.context_scale = root.get_double("context_scale", Range::closed(0, 0.9), options.context_scale);
   options.label_neighbours = root.get_int("label_neighbours", Range::closed(0, 100), options.label_neighbours);
   options.sky_only_at_infinity = root.get_bool("sky_only_at_infinity", options.sky_only_at_infinity);
-  options.unreliable_classes = read_classes(root, "unreliable_classes", options.unreliable_classes);
-  options.moving_classes = read_classes(root, "moving_classes", options.moving_classes);
+  LabelPolicy& labels = options.labels;
+  labels.unreliable.classes = read_classes(root, "unreliable_classes", labels.unreliable.classes);
+  labels.moving.classes = read_classes(root, "moving_classes", labels.moving.classes);
   if (const auto regions = root.optional_child("moving_regions")) {
     semantics::MovingRegionOptions& region_options = options.moving_regions;
     region_options.step = regions->get_int("step", Range::closed(0, 256), region_options.step);
@@ -155,12 +156,11 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
     region_options.min_density = regions->get_double("min_density", Range::positive(1), region_options.min_density);
     regions->finish();
   }
-  options.min_confidence = root.get_double("min_confidence", Range::closed(0, 1), options.min_confidence);
-  options.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), options.unreliable_weight);
-  options.min_reliable_points =
-      root.get_int("min_reliable_points", Range::closed(0, 100000), options.min_reliable_points);
-  options.unreliable_verify_px =
-      root.get_double("unreliable_verify_px", Range::closed(0, 100), options.unreliable_verify_px);
+  labels.unreliable.min_confidence = labels.moving.min_confidence = static_cast<float>(
+      root.get_double("min_confidence", Range::closed(0, 1), labels.unreliable.min_confidence));
+  labels.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), labels.unreliable_weight);
+  labels.min_reliable_points = root.get_int("min_reliable_points", Range::closed(0, 100000), labels.min_reliable_points);
+  labels.verify_px = root.get_double("unreliable_verify_px", Range::closed(0, 100), labels.verify_px);
   root.finish();
   return options;
 }

@@ -42,45 +42,16 @@ struct SemanticsOptions {
   // ... and a point two keyframes measure at a finite depth is not sky
   // (MapLabelOptions::sky_only_at_infinity).
   bool sky_only_at_infinity = true;
-  // The tracker weighs points labelled with one of these classes at
-  // `min_confidence` or more (moving or unstable things) down in the pose
-  // update (unreliable_weight); bundle adjustment takes them at full weight,
-  // except those of a moving class (below), which both leave out. Default:
-  // car, vegetation, sky, various.
-  ClassSet unreliable_classes{(1u << 2) | (1u << 7) | (1u << 6) | (1u << 0)};
-  double min_confidence = 0.5;
-  // Their weight in the pose update: 0 leaves them out of the search. Down-
-  // weighting is as good as leaving out where things move (street-dynamic
-  // 0.246 % against 0.244 %) and does not starve tracking where the
-  // "unreliable" things stand still (the demo's tree): docs/benchmarks.md.
-  double unreliable_weight = 0.1;
-  // ... unless fewer than this many other points are in view.
-  int min_reliable_points = 100;
-  // A down-weighted point the pose reprojects within this many pixels (of
-  // its search level) is verified static and keeps its full weight
-  // (TrackerOptions::unreliable_verify_px; 0: never). On KITTI's snippet,
-  // down-weighting its parked cars and roadside trees in the coarse stage
-  // lost 7-8 frames with some grey models and weights; with 2 px, none.
-  double unreliable_verify_px = 2.0;
-  // Points of these classes (own label, min_confidence) are left out
-  // altogether, by the tracker (as with a weight of 0, min_reliable_points
-  // included) and by bundle adjustment: a car's points move as one body,
-  // so their measurements agree with one another on a wrong motion, which
-  // neither Tukey's weights nor a robust loss reject, and a tracker weight
-  // of 0.1 still lets them steer (with true labels street-traffic at
-  // 2.8-8.6 % instead of 0.24 %; street-drive with the forest's labels
-  // drifted to 1.90 / 1.01 / 0.37 % over tracker seeds 1-3, now 0.046 /
-  // 0.034 / 0.017 %, 0.019 % without labels). Once the tracker leaves them
-  // out, bundle adjustment hardly sees them (0.224 % with them at full
-  // weight there): leaving them out of it too keeps the two consistent. Swaying trees are noise that the weights
-  // handle, and trees that stand still carry the pose where little else
-  // does (the demo): docs/benchmarks.md.
-  ClassSet moving_classes{1u << 2};
-  // ... and so are points in regions the semantic worker finds dense with
-  // calls of a moving class (semantics/worker/moving_regions.hpp): the
-  // forest calls few of a close-up car's points car one by one, many of its
-  // region's. street-traffic with the forest's labels 8.70 -> 0.23 % (its
-  // static twin 0.30 %); step 0: no regions (docs/benchmarks.md).
+  // How the tracker, bundle adjustment and culling treat a point by its label
+  // (core/map/label_policy.hpp). Shipped: car, vegetation, sky and various are
+  // unreliable at a vote share of 0.5 or more, cars are moving, and so are
+  // points in moving regions (below) unless their step is 0.
+  LabelPolicy labels{.unreliable = {.classes = ClassSet{(1u << 2) | (1u << 7) | (1u << 6) | (1u << 0)}},
+                     .moving = {.classes = ClassSet{1u << 2}, .regions = true}};
+  // Regions the semantic worker finds dense with calls of a moving class
+  // (semantics/worker/moving_regions.hpp): the forest calls few of a
+  // close-up car's points car one by one, many of its region's. Step 0: no
+  // regions.
   semantics::MovingRegionOptions moving_regions;
 
   // prior^weight per class, scaled so the largest is 1.

@@ -47,25 +47,18 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
   if (!options.grey_model.empty())
     worker->use_grey_model(load(options.grey_model, ModelImages::grey, "the grey model"));
   worker->use_context_scale(options.context_scale);
-  worker->use_moving_regions(options.moving_regions, options.moving_classes);
+  worker->use_moving_regions(options.moving_regions, options.labels.moving.classes);
   worker->use_map_labels(map, options.map_labels());
   return worker;
 }
 
-// With labels coming, the tracker weighs points of unreliable classes down
-// (or leaves them out: SemanticsOptions::unreliable_weight), and leaves out
-// those of moving classes, as bundle adjustment does.
+// With labels coming, the tracker, bundle adjustment and culling share one
+// label policy; moving regions count only where the worker detects them.
 SlamOptions with_label_aware_tracking(SlamOptions options) {
-  if (options.semantics.enabled) {
-    const auto min_confidence = static_cast<float>(options.semantics.min_confidence);
-    options.tracker.unreliable = {options.semantics.unreliable_classes, min_confidence};
-    const bool regions = options.semantics.moving_regions.step > 0;
-    options.tracker.moving = {options.semantics.moving_classes, min_confidence, regions};
-    options.mapmaker.left_out_of_ba = options.tracker.moving;
-    options.tracker.min_reliable_points = options.semantics.min_reliable_points;
-    options.tracker.unreliable_weight = options.semantics.unreliable_weight;
-    options.tracker.unreliable_verify_px = options.semantics.unreliable_verify_px;
-  }
+  if (!options.semantics.enabled) return options;
+  LabelPolicy labels = options.semantics.labels;
+  labels.moving.regions = labels.moving.regions && options.semantics.moving_regions.step > 0;
+  options.tracker.labels = options.mapmaker.labels = labels;
   return options;
 }
 

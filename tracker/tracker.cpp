@@ -71,11 +71,6 @@ void Tracker::reset() {
   descriptor_relocaliser_.clear();
 }
 
-double Tracker::label_weight(const MapPoint& point) const {
-  if (options_.moving.contains(point)) return 0.0;
-  return options_.unreliable.contains(point) ? options_.unreliable_weight : 1.0;
-}
-
 std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
                                                      const SE3d& T_c_w, int* dropped,
                                                      SearchCounts* counts) const {
@@ -97,14 +92,14 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
     }
     // Down-weighted points are searched like any other (pose_measurements
     // gives them their weight); only a weight of 0 leaves them out.
-    const bool left = label_weight(*points[i].point) <= 0.0;
+    const bool left = options_.labels.tracking_weight(*points[i].point) <= 0.0;
     (left ? left_out : out).push_back({i, px, warp, level});
   }
   // Labels must never starve the tracker: where the view is mostly of
   // unreliable classes (a tree filling it, or a forest that calls a facade
   // vegetation), the points are searched after all and the robust pose
   // update has the last word.
-  if (static_cast<int>(out.size()) < options_.min_reliable_points) {
+  if (static_cast<int>(out.size()) < options_.labels.min_reliable_points) {
     out.insert(out.end(), left_out.begin(), left_out.end());
   } else if (dropped) {
     *dropped += static_cast<int>(left_out.size());
@@ -155,7 +150,7 @@ std::vector<PoseMeasurement> Tracker::pose_measurements(const std::vector<PointS
   std::vector<PoseMeasurement> out;
   out.reserve(found.size());
   for (const auto& m : found) {
-    const double weight = label_weight(*m.point);
+    const double weight = options_.labels.tracking_weight(*m.point);
     if (down_weighted && weight < 1.0) ++*down_weighted;
     out.push_back({geometry.at(m.point.get())->p_w, m.pixel, m.level, weight});
   }
@@ -164,7 +159,7 @@ std::vector<PoseMeasurement> Tracker::pose_measurements(const std::vector<PointS
 
 int Tracker::verify_unreliable(PoseUpdateResult& update, std::vector<PoseMeasurement>& measurements,
                                VerifyWhen when) const {
-  if (options_.unreliable_verify_px <= 0.0) return 0;
+  if (options_.labels.verify_px <= 0.0) return 0;
   // Labels are a prior, geometry the evidence: a down-weighted point that the
   // pose of the rest reprojects within a pixel or two (in its level's pixels)
   // stands still, whatever its class says (a parked car, a tree on a calm
@@ -178,8 +173,8 @@ int Tracker::verify_unreliable(PoseUpdateResult& update, std::vector<PoseMeasure
   int reliable_inliers = 0;
   for (std::size_t i = 0; i < measurements.size(); ++i)
     reliable_inliers += measurements[i].weight >= 1.0 && update.inliers[i];
-  if (when == VerifyWhen::few_reliable && reliable_inliers >= options_.min_reliable_points) return 0;
-  const double limit_squared = options_.unreliable_verify_px * options_.unreliable_verify_px;
+  if (when == VerifyWhen::few_reliable && reliable_inliers >= options_.labels.min_reliable_points) return 0;
+  const double limit_squared = options_.labels.verify_px * options_.labels.verify_px;
   int verified = 0;
   for (std::size_t i = 0; i < measurements.size(); ++i) {
     PoseMeasurement& m = measurements[i];

@@ -56,7 +56,7 @@ struct TrackingResult {
   int fine_searched = 0, fine_found = 0;
   int points_dropped = 0;        // projecting into the image, but of weight 0 (moving class): not searched
   int points_down_weighted = 0;  // found, of an unreliable or moving class: a lower weight in the pose update
-  int points_verified = 0;       // ... of which the pose put within unreliable_verify_px: full weight after all
+  int points_verified = 0;       // ... of which the pose put within LabelPolicy::verify_px: full weight after all
   double inlier_rms_px = 0;
   // How far the pose found lies from the motion model's prediction
   // (rotation, and camera centre in map units): what the search radii must cover.
@@ -93,11 +93,8 @@ class Tracker {
   // others are in view.
   std::vector<Candidate> project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w,
                                      int* dropped = nullptr, SearchCounts* counts = nullptr) const;
-  // A point's prior weight from its label: 0 for a moving class, the
-  // unreliable weight for an unreliable one, else 1.
-  double label_weight(const MapPoint& point) const;
   // Gives the down-weighted measurements that `update`'s pose reprojects
-  // within TrackerOptions::unreliable_verify_px their full weight and updates
+  // within LabelPolicy::verify_px their full weight and updates
   // the pose again from there; returns how many. `few_reliable`: only when
   // fewer than min_reliable_points full-weight measurements are inliers.
   enum class VerifyWhen { always, few_reliable };

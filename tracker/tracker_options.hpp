@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "core/image/image_pyramid.hpp"
-#include "core/map/unreliable_labels.hpp"
+#include "core/map/label_policy.hpp"
 #include "core/patch/patch_search.hpp"
 #include "core/patch/patch_warp.hpp"
 #include "tracker/pose_update.hpp"
@@ -98,25 +98,9 @@ struct TrackerOptions {
   bool keyframe_overlap_skips_revisits = true;
   int keyframe_revisit_age_frames = 60;
 
-  // Label-aware tracking (set from configs/semantics.yaml when semantics are
-  // on): a point with one of these labels (its own label's class, at the
-  // minimum confidence or more) is weighed down in the pose update, or left
-  // out of the search: cars drive off, trees sway, the sky has no depth.
-  UnreliableLabels unreliable;  // no classes: labels are ignored
-  // Their weight in the pose update (Tukey's times this); 0 leaves them out
-  // of the search altogether ...
-  double unreliable_weight = 0.0;
-  // Points with these labels (things that move as one body: cars) are left
-  // out like a weight of 0, whatever unreliable_weight says ...
-  UnreliableLabels moving;
-  // ... unless (for both) fewer than this many other points project into the image.
-  int min_reliable_points = 100;
-  // A down-weighted point that the pose reprojects within this many pixels
-  // (of the level it was found at) is verified static and gets its full
-  // weight in a second pose update (Tracker::verify_unreliable): always in
-  // the coarse stage, in the fine stage when fewer than min_reliable_points
-  // other points are inliers; 0: never.
-  double unreliable_verify_px = 0.0;
+  // Label-aware tracking (core/map/label_policy.hpp): set from
+  // configs/semantics.yaml when semantics are on; no classes: labels are ignored.
+  LabelPolicy labels;
 
   std::uint64_t seed = 1;  // point-sampling order; fixed for reproducible runs
 };

@@ -18,6 +18,7 @@ struct UnreliableLabels {
   bool regions = false;
 
   bool any() const { return classes.any(); }
+  bool operator==(const UnreliableLabels&) const = default;
   bool contains(const MapPoint& point) const;
 };
 

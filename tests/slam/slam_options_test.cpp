@@ -125,20 +125,19 @@ TEST(SemanticsOptions, ShippedConfigHoldsTheDefaults) {
   EXPECT_EQ(shipped.enabled, defaults.enabled);
   EXPECT_EQ(shipped.model, defaults.model);
   EXPECT_EQ(shipped.grey_model, defaults.grey_model);
-  EXPECT_EQ(shipped.unreliable_verify_px, defaults.unreliable_verify_px);
+  EXPECT_EQ(shipped.labels.verify_px, defaults.labels.verify_px);
   EXPECT_EQ(shipped.class_prior, defaults.class_prior);
   EXPECT_EQ(shipped.class_prior_weight, defaults.class_prior_weight);
   EXPECT_EQ(shipped.context_scale, defaults.context_scale);
   EXPECT_EQ(shipped.label_neighbours, defaults.label_neighbours);
   EXPECT_EQ(shipped.sky_only_at_infinity, defaults.sky_only_at_infinity);
-  EXPECT_EQ(shipped.unreliable_classes, defaults.unreliable_classes);
-  EXPECT_EQ(shipped.min_confidence, defaults.min_confidence);
-  EXPECT_EQ(shipped.min_reliable_points, defaults.min_reliable_points);
-  EXPECT_EQ(shipped.unreliable_weight, defaults.unreliable_weight);
+  EXPECT_EQ(shipped.labels.unreliable, defaults.labels.unreliable);
+  EXPECT_EQ(shipped.labels.moving, defaults.labels.moving);
+  EXPECT_EQ(shipped.labels.min_reliable_points, defaults.labels.min_reliable_points);
+  EXPECT_EQ(shipped.labels.unreliable_weight, defaults.labels.unreliable_weight);
   for (const char* name : {"car", "vegetation", "sky", "various"})
-    EXPECT_TRUE(shipped.unreliable_classes.test(*semantic_class_by_name(name))) << name;
-  EXPECT_EQ(shipped.moving_classes, defaults.moving_classes);
-  EXPECT_EQ(shipped.moving_classes, ClassSet().set(*semantic_class_by_name("car")));
+    EXPECT_TRUE(shipped.labels.unreliable.classes.test(*semantic_class_by_name(name))) << name;
+  EXPECT_EQ(shipped.labels.moving.classes, ClassSet().set(*semantic_class_by_name("car")));
   EXPECT_EQ(shipped.moving_regions.step, defaults.moving_regions.step);
   EXPECT_EQ(shipped.moving_regions.sigma_cells, defaults.moving_regions.sigma_cells);
   EXPECT_EQ(shipped.moving_regions.min_density, defaults.moving_regions.min_density);
@@ -160,8 +159,8 @@ TEST(SemanticsOptions, ReadsClassLists) {
   const auto path = dir / "semantics.yaml";
   test::write_text(path, "unreliable_classes: [sky]\nmoving_classes: []\n");
   const SemanticsOptions o = load_semantics_options(path);
-  EXPECT_EQ(o.unreliable_classes, ClassSet().set(*semantic_class_by_name("sky")));
-  EXPECT_TRUE(o.moving_classes.none());
+  EXPECT_EQ(o.labels.unreliable.classes, ClassSet().set(*semantic_class_by_name("sky")));
+  EXPECT_TRUE(o.labels.moving.classes.none());
 }
 
 TEST(SemanticsOptions, ClassWeightsArePriorToTheWeight) {

@@ -244,11 +244,11 @@ class LabelledPlaneTracking : public PlaneTracking {
   }
   static TrackerOptions label_aware(double verify_px) {
     TrackerOptions options;
-    options.unreliable.classes.set(2);
-    options.unreliable.min_confidence = 0.5f;
-    options.unreliable_weight = 0.1;
-    options.min_reliable_points = 100;
-    options.unreliable_verify_px = verify_px;
+    options.labels.unreliable.classes.set(2);
+    options.labels.unreliable.min_confidence = 0.5f;
+    options.labels.unreliable_weight = 0.1;
+    options.labels.min_reliable_points = 100;
+    options.labels.verify_px = verify_px;
     return options;
   }
 };
@@ -282,7 +282,7 @@ TEST_F(LabelledPlaneTracking, LeavesPointsOfMovingClassesOut) {
       point->set_votes(votes);
     }
     TrackerOptions options = label_aware(2.0);
-    options.moving = options.unreliable;
+    options.labels.moving = options.labels.unreliable;
     Tracker tracker(camera_, map_, queue_, options);
     tracker.start(SE3d(), 0);
     for (int i = 1; i <= 5; ++i) {
