@@ -34,7 +34,8 @@ CLI::Validator whole_number(long long min, long long max) {
         const bool negative = text.size() > 1 && text[0] == '-';
         if (negative) start = 1;
         const std::string digits = text.substr(start);
-        bool fits = !digits.empty() && digits.size() <= 18 && digits.find_first_not_of("0123456789") == std::string::npos;
+        bool fits =
+            !digits.empty() && digits.size() <= 18 && digits.find_first_not_of("0123456789") == std::string::npos;
         if (fits) {
           const long long value = negative ? -std::stoll(digits) : std::stoll(digits);
           fits = value >= min && value <= max;
@@ -102,9 +103,7 @@ void require_creatable_folder(const std::filesystem::path& folder) {
   std::filesystem::remove(probe, ec);
 }
 
-void fail_usage(const std::string& option, const std::string& message) {
-  throw CLI::ValidationError(option, message);
-}
+void fail_usage(const std::string& option, const std::string& message) { throw CLI::ValidationError(option, message); }
 
 std::pair<int, int> parse_image_size(const std::string& text, const std::string& option) {
   const auto x = text.find('x');

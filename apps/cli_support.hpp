@@ -11,8 +11,8 @@ namespace facadeslam::apps {
 
 // Exit codes, documented in the README.
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitError = 1;       // bad input, failed run
-inline constexpr int kExitUsage = 2;       // bad command line
+inline constexpr int kExitError = 1;           // bad input, failed run
+inline constexpr int kExitUsage = 2;           // bad command line
 inline constexpr int kExitNotInitialised = 3;  // replay ran, but the map never initialised
 
 // A file that must exist and be a regular file.

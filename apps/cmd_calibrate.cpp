@@ -59,8 +59,9 @@ void run(const Options& o) {
   // camera.yaml behind. Each replaces only a file of its kind calibrate
   // wrote, none lies among the images (it would be read as one next time).
   if (o.out.extension() != ".yaml")
-    fail_file(o.out, "--out: expected a camera file name ending in .yaml (the plot goes beside it as "
-                     "NAME_coverage.png)");
+    fail_file(o.out,
+              "--out: expected a camera file name ending in .yaml (the plot goes beside it as "
+              "NAME_coverage.png)");
   const std::filesystem::path plot = o.plot.empty() ? default_plot_path(o.out) : o.plot;
   OutputPlan plan;
   plan.input_folder_read_whole(o.images, "--images");
@@ -110,8 +111,7 @@ std::string check_positive_length(const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != text.size() || !std::isfinite(value) || value <= 0.0)
-    return "'" + text + "': expected a number > 0";
+  if (used != text.size() || !std::isfinite(value) || value <= 0.0) return "'" + text + "': expected a number > 0";
   return {};
 }
 

@@ -6,7 +6,8 @@
 namespace facadeslam::apps {
 
 void add_evaluate_command(CLI::App& app) {
-  auto* evaluate = app.add_subcommand("evaluate", "Evaluate trajectories and labels against ground truth, and descriptor invariance");
+  auto* evaluate = app.add_subcommand(
+      "evaluate", "Evaluate trajectories and labels against ground truth, and descriptor invariance");
   evaluate->require_subcommand(1);
   add_evaluate_trajectory_command(*evaluate);
   add_evaluate_labels_command(*evaluate);

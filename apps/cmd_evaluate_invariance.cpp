@@ -52,9 +52,7 @@ std::string option_name(std::string_view case_name) {
 }
 
 // "--<option>: <message>" for a bad option value: a bad command line (exit code 2).
-[[noreturn]] void fail_option(const std::string& option, const std::string& message) {
-  fail_usage(option, message);
-}
+[[noreturn]] void fail_option(const std::string& option, const std::string& message) { fail_usage(option, message); }
 
 std::vector<semantics::InvarianceCaseRun> chosen_cases(const Options& o) {
   std::array<bool, kCaseCount> chosen{};
@@ -74,11 +72,11 @@ std::vector<semantics::InvarianceCaseRun> chosen_cases(const Options& o) {
   for (std::size_t k = 0; k < kCaseCount; ++k) {
     const auto& info = kInvarianceCases[k];
     if (!chosen[k]) {
-      if (!o.values[k].empty())
-        fail_option(option_name(info.name), "values given for a case that --cases leaves out");
+      if (!o.values[k].empty()) fail_option(option_name(info.name), "values given for a case that --cases leaves out");
       continue;
     }
-    semantics::InvarianceCaseRun run{info.id, o.values[k].empty() ? semantics::default_case_values(info.id) : o.values[k]};
+    semantics::InvarianceCaseRun run{info.id,
+                                     o.values[k].empty() ? semantics::default_case_values(info.id) : o.values[k]};
     try {
       semantics::check_case_values(run.id, run.values);
     } catch (const Error& e) {
@@ -102,7 +100,8 @@ void run(const Options& o) {
   options.cases = chosen_cases(o);
   std::string plot_extension = o.plot.extension().string();
   for (char& c : plot_extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (!o.plot.empty() && plot_extension != ".png") fail_file(o.plot, "expected a file name ending in .png for the plot");
+  if (!o.plot.empty() && plot_extension != ".png")
+    fail_file(o.plot, "expected a file name ending in .png for the plot");
   // Every output location, before the long run: each replaces only a file
   // of its kind this program wrote and none is an input (output_policy.hpp).
   OutputPlan plan;
@@ -154,7 +153,8 @@ void run(const Options& o) {
     spdlog::info("wrote {}", o.plot.string());
   }
   if (!o.plot_dir.empty())
-    for (const fs::path& written : semantics::save_case_plots(o.plot_dir, result)) spdlog::info("wrote {}", written.string());
+    for (const fs::path& written : semantics::save_case_plots(o.plot_dir, result))
+      spdlog::info("wrote {}", written.string());
 }
 
 }  // namespace
@@ -174,7 +174,8 @@ void add_evaluate_invariance_command(CLI::App& evaluate) {
   cmd->add_option("--max-images", options->max_images, "Use only the first N images (0 = all)")
       ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
-  std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames), std::end(semantics::kPointDescriptorNames));
+  std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames),
+                                 std::end(semantics::kPointDescriptorNames));
   names.emplace_back("all");
   cmd->add_option("--descriptor", options->descriptors, "Descriptors to compare (comma-separated or repeated), or all")
       ->delimiter(',')

@@ -33,7 +33,7 @@ using semantics::Genome;
 struct Options {
   semantics::LabelEvaluationOptions evaluation;
   std::vector<std::string> descriptors{"modular"};  // several: one run each, same keypoints and forest settings
-  std::string genome;  // text, file or empty (thesis genome)
+  std::string genome;                               // text, file or empty (thesis genome)
   std::filesystem::path json, confusion;
   std::filesystem::path model;  // test this model file instead of training
   std::string keypoints = "grid";
@@ -48,13 +48,14 @@ std::string percent(double v) {
 
 void print_summary(const semantics::LabelEvaluation& r) {
   if (r.model.empty())
-    std::printf("label evaluation: %s (%d values), %zu training / %zu test images, %zu training rows, %zu test keypoints\n",
-                r.descriptor.c_str(), r.descriptor_width, r.train_images, r.test_images, r.train_samples,
-                r.test_keypoints);
+    std::printf(
+        "label evaluation: %s (%d values), %zu training / %zu test images, %zu training rows, %zu test keypoints\n",
+        r.descriptor.c_str(), r.descriptor_width, r.train_images, r.test_images, r.train_samples, r.test_keypoints);
   else
-    std::printf("label evaluation of %s: %s (%d values), %d trees of depth <= %d, %zu test images, %zu test keypoints\n",
-                r.model.string().c_str(), r.descriptor.c_str(), r.descriptor_width, r.forest.trees, r.forest.max_depth,
-                r.test_images, r.test_keypoints);
+    std::printf(
+        "label evaluation of %s: %s (%d values), %d trees of depth <= %d, %zu test images, %zu test keypoints\n",
+        r.model.string().c_str(), r.descriptor.c_str(), r.descriptor_width, r.forest.trees, r.forest.max_depth,
+        r.test_images, r.test_keypoints);
   std::printf("  overall recognition rate  %s %%\n", percent(r.confusion.overall_recognition_rate()).c_str());
   std::printf("  average recognition rate  %s %%\n", percent(r.confusion.average_recognition_rate()).c_str());
   std::printf("  %-12s %8s %9s %8s %10s\n", "class", "recall", "precision", "f1", "keypoints");
@@ -83,9 +84,9 @@ std::filesystem::path confusion_path(const Options& o, const std::string& descri
 
 void save_confusion(const std::filesystem::path& path, const semantics::LabelEvaluation& result) {
   char title[200];
-  std::snprintf(title, sizeof title, "%s: overall %.1f %%, average %.1f %% (%zu test images)", result.descriptor.c_str(),
-                100.0 * result.confusion.overall_recognition_rate(), 100.0 * result.confusion.average_recognition_rate(),
-                result.test_images);
+  std::snprintf(title, sizeof title, "%s: overall %.1f %%, average %.1f %% (%zu test images)",
+                result.descriptor.c_str(), 100.0 * result.confusion.overall_recognition_rate(),
+                100.0 * result.confusion.average_recognition_rate(), result.test_images);
   semantics::save_confusion_matrix_png(path, result.confusion, semantics::evaluation_class_names(), title);
   spdlog::info("wrote {}", path.string());
 }
@@ -116,14 +117,16 @@ void run(Options& o) {
   // Each output replaces only a file of its kind this program wrote, and
   // none is an input (`--json DATASET/test.txt`): output_policy.hpp.
   OutputPlan plan;
-  for (const char* list : {"train.txt", "test.txt"}) plan.input(o.evaluation.dataset / list, "--dataset's " + std::string(list));
+  for (const char* list : {"train.txt", "test.txt"})
+    plan.input(o.evaluation.dataset / list, "--dataset's " + std::string(list));
   plan.input_folder_read_whole(o.evaluation.dataset / "images", "--dataset's images/");
   plan.input_folder_read_whole(o.evaluation.dataset / "labels", "--dataset's labels/");
   plan.input(o.model, "--model");
   if (is_existing_file(o.genome)) plan.input(o.genome, "--genome");
   plan.output_file(o.json, "--json", label_evaluation_kind());
   if (!o.confusion.empty() && o.model.empty())
-    for (const std::string& name : descriptors) plan.output_file(confusion_path(o, name, several), "--confusion", png_picture_kind());
+    for (const std::string& name : descriptors)
+      plan.output_file(confusion_path(o, name, several), "--confusion", png_picture_kind());
   else
     plan.output_file(o.confusion, "--confusion", png_picture_kind());
   plan.output_file(o.evaluation.model_out, "--model-out", model_out_kind());
@@ -178,20 +181,25 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
   auto options = std::make_shared<Options>();
   auto& e = options->evaluation;
   auto* cmd = evaluate.add_subcommand(
-      "labels", "Train a random forest on a LabelMeFacade-style dataset's train.txt and report keypoint labelling on test.txt");
+      "labels",
+      "Train a random forest on a LabelMeFacade-style dataset's train.txt and report keypoint labelling on test.txt");
   cmd->add_option("--dataset", e.dataset, "Dataset folder: train.txt, test.txt, images/, labels/")->required();
-  std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames), std::end(semantics::kPointDescriptorNames));
+  std::vector<std::string> names(std::begin(semantics::kPointDescriptorNames),
+                                 std::end(semantics::kPointDescriptorNames));
   names.emplace_back("all");
-  auto* descriptor_option = cmd->add_option("--descriptor", options->descriptors,
-                  "Descriptors to evaluate (comma-separated or repeated), or all: one run each on the same keypoints "
-                  "and training sample with the same forest settings, then a comparison table; with several, the "
-                  "JSON holds {comparison, runs} and --confusion NAME.png becomes NAME_<descriptor>.png")
-      ->delimiter(',')
-      ->check(CLI::IsMember(names))
-      ->capture_default_str();
-  auto* genome_option = cmd->add_option("--genome", options->genome,
-                  "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the 211-character "
-                  "0/1 string (default: the thesis' best genome)");
+  auto* descriptor_option =
+      cmd->add_option(
+             "--descriptor", options->descriptors,
+             "Descriptors to evaluate (comma-separated or repeated), or all: one run each on the same keypoints "
+             "and training sample with the same forest settings, then a comparison table; with several, the "
+             "JSON holds {comparison, runs} and --confusion NAME.png becomes NAME_<descriptor>.png")
+          ->delimiter(',')
+          ->check(CLI::IsMember(names))
+          ->capture_default_str();
+  auto* genome_option = cmd->add_option(
+      "--genome", options->genome,
+      "Modular-descriptor genome and forest settings: a genome file (0/1 text or .json) or the 211-character "
+      "0/1 string (default: the thesis' best genome)");
   cmd->add_option("--step", e.step, "Grid step in pixels")->check(CLI::Range(1, 10000))->capture_default_str();
   cmd->add_flag("--grey", e.grey,
                 "Train and test on the photos turned grey (three equal channels, as a grey camera's frames reach "
@@ -206,25 +214,29 @@ void add_evaluate_labels_command(CLI::App& evaluate) {
                   "worker does (configs/semantics.yaml context_scale, 0.25); 0 = full size only")
       ->check(CLI::Range(0.0, 0.9))
       ->capture_default_str();
-  auto* balance_option = cmd->add_flag("--balance", e.balance,
-                "Class-balanced training sample: every class sampled to the median class size (rare classes "
-                "oversampled, common ones subsampled)");
-  auto* max_train_option = cmd->add_option("--max-train", e.max_train_images, "Use only the first N images of train.txt (0 = all)")
-      ->check(whole_number(0, kMaxCount))
-      ->capture_default_str();
+  auto* balance_option =
+      cmd->add_flag("--balance", e.balance,
+                    "Class-balanced training sample: every class sampled to the median class size (rare classes "
+                    "oversampled, common ones subsampled)");
+  auto* max_train_option =
+      cmd->add_option("--max-train", e.max_train_images, "Use only the first N images of train.txt (0 = all)")
+          ->check(whole_number(0, kMaxCount))
+          ->capture_default_str();
   cmd->add_option("--max-test", e.max_test_images, "Use only the first N images of test.txt (0 = all)")
       ->check(whole_number(0, kMaxCount))
       ->capture_default_str();
-  auto* max_samples_option = cmd->add_option("--max-samples", e.max_samples, "At most N training keypoints, drawn at random (0 = all)")
-      ->check(whole_number(0, kMaxCount))
-      ->capture_default_str();
+  auto* max_samples_option =
+      cmd->add_option("--max-samples", e.max_samples, "At most N training keypoints, drawn at random (0 = all)")
+          ->check(whole_number(0, kMaxCount))
+          ->capture_default_str();
   auto* seed_option = cmd->add_option("--seed", e.seed, "Seed of the training-sample draw and of the forest")
-      ->check(whole_number(0, kMaxSeed))
-      ->capture_default_str();
+                          ->check(whole_number(0, kMaxSeed))
+                          ->capture_default_str();
   cmd->add_option("--json", options->json, "Write the report to this JSON file")->check(kNonEmptyPath);
   cmd->add_option("--confusion", options->confusion, "Write the confusion matrix to this PNG")->check(kNonEmptyPath);
   auto* model_out_option =
-      cmd->add_option("--model-out", e.model_out, "Save the trained forest (model.fsmodel, or model.yml.gz for OpenCV's own format)")
+      cmd->add_option("--model-out", e.model_out,
+                      "Save the trained forest (model.fsmodel, or model.yml.gz for OpenCV's own format)")
           ->check(kNonEmptyPath);
   // A model file fixes the descriptor, genome and forest: the training
   // options would be silently ignored, so they are refused.

@@ -48,25 +48,28 @@ void report(const Options& o, const semantics::OptimiseResult& r) {
                  r.generations - 1);
     throw CLI::RuntimeError(interrupt_exit_code());
   }
-  std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n",
-              r.generations, r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
+  std::printf("optimise: %d generations, %zu evaluations (%zu cached) in %.1f s (%.1f s evaluating)\n", r.generations,
+              r.evaluations, r.cache_hits, r.seconds, r.evaluation_seconds);
   const double busy = r.describe_seconds + r.train_seconds + r.validate_seconds + r.invariance_seconds;
   if (busy > 0)
-    std::printf("optimise: evaluation time: %.0f %% describing the training sample, %.0f %% training forests, "
-                "%.0f %% validating, %.0f %% invariance cases\n",
-                100 * r.describe_seconds / busy, 100 * r.train_seconds / busy, 100 * r.validate_seconds / busy,
-                100 * r.invariance_seconds / busy);
-  std::printf("optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, "
-              "%.3f x cv::SIFT's time (modelled), %d values -> %s\n",
-              r.best.best, r.best.generation, r.best_evaluation.overall, r.best_evaluation.average,
-              r.best_evaluation.time_ratio, r.best_evaluation.values, (o.run.out / "best.genome").string().c_str());
+    std::printf(
+        "optimise: evaluation time: %.0f %% describing the training sample, %.0f %% training forests, "
+        "%.0f %% validating, %.0f %% invariance cases\n",
+        100 * r.describe_seconds / busy, 100 * r.train_seconds / busy, 100 * r.validate_seconds / busy,
+        100 * r.invariance_seconds / busy);
+  std::printf(
+      "optimise: best objective %.4f at generation %d: overall %.4f, average %.4f, "
+      "%.3f x cv::SIFT's time (modelled), %d values -> %s\n",
+      r.best.best, r.best.generation, r.best_evaluation.overall, r.best_evaluation.average,
+      r.best_evaluation.time_ratio, r.best_evaluation.values, (o.run.out / "best.genome").string().c_str());
   std::fflush(stdout);
 }
 
 // "DIR/.NAME.tmp-PID/..." in a message -> "DIR/NAME/...".
 std::string unstaged(std::string text, const std::filesystem::path& staging, const std::filesystem::path& out) {
   const std::string from = staging.string(), to = out.string();
-  for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) text.replace(at, from.size(), to);
+  for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size())
+    text.replace(at, from.size(), to);
   return text;
 }
 
@@ -179,8 +182,10 @@ void run(Options& o) {
       o.run.seeds.push_back(std::move(genome));
   }
   if (o.run.seeds.size() > static_cast<std::size_t>(o.run.ga.population))
-    throw CLI::ValidationError("--seed-genome", std::to_string(o.run.seeds.size()) + " seed genomes (with the thesis "
-                               "genome) do not fit a population of " + std::to_string(o.run.ga.population));
+    throw CLI::ValidationError("--seed-genome", std::to_string(o.run.seeds.size()) +
+                                                    " seed genomes (with the thesis "
+                                                    "genome) do not fit a population of " +
+                                                    std::to_string(o.run.ga.population));
 #ifdef FACADESLAM_HAVE_MPI
   if (semantics::launched_by_mpi()) {
     if (const auto r = run_under_mpi(o)) report(o, *r);

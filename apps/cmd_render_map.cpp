@@ -63,7 +63,8 @@ void run(const Options& o) {
   if (!o.keyframes.empty()) require_file(o.keyframes, "a TUM keyframes.txt written by `facadeslam replay`");
   if (!o.trajectory.empty()) require_file(o.trajectory, "a TUM trajectory.txt written by `facadeslam replay`");
   std::string extension = o.out.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (extension != ".png") fail_file(o.out, "expected an output file name ending in .png");
   int width = 0, height = 0;
   try {

@@ -96,7 +96,8 @@ int run_replay(ReplayOptions o) {
   if (o.sequence.empty()) {
     o.sequence = shipped_file(kDemoSequence);
     if (!path_exists(o.sequence))
-      throw Error(o.sequence.string() + ": the embedded demo is not rendered yet (run scripts/make-demo, or pass a SEQUENCE)");
+      throw Error(o.sequence.string() +
+                  ": the embedded demo is not rendered yet (run scripts/make-demo, or pass a SEQUENCE)");
     if (o.gt.empty() && path_exists(o.sequence / "groundtruth.txt")) o.gt = o.sequence / "groundtruth.txt";
   }
   if (o.out.empty()) o.out = kDefaultOutput;
@@ -135,8 +136,9 @@ int run_replay(ReplayOptions o) {
       // frames are skipped, so that the motion keeps about its pace.
       const double video_fps = std::clamp(30.0 / static_cast<double>(o.render_every), 5.0, 30.0);
       ar_render = std::make_unique<ReplayRender>(
-          ReplayRenderOptions{staged_render ? staged_render->path() : staged.staged(o.render), o.render_every, video_fps,
-                              "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string()},
+          ReplayRenderOptions{
+              staged_render ? staged_render->path() : staged.staged(o.render), o.render_every, video_fps,
+              "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string()},
           camera);
     } catch (const Error& e) {
       throw CLI::ValidationError("--render", e.what());
@@ -183,14 +185,16 @@ int run_replay(ReplayOptions o) {
     if (interrupt_requested()) {
       interrupted = true;
       progress.finish();
-      std::fprintf(stderr, "facadeslam: interrupted before frame %zu: finishing the map and writing the outputs "
-                           "(Ctrl-C again to abort)\n", frame->index);
+      std::fprintf(stderr,
+                   "facadeslam: interrupted before frame %zu: finishing the map and writing the outputs "
+                   "(Ctrl-C again to abort)\n",
+                   frame->index);
       break;
     }
     if (frame->colour.cols != camera.width() || frame->colour.rows != camera.height())
-      fail_file(frame->source, "image is " + std::to_string(frame->colour.cols) + "x" + std::to_string(frame->colour.rows) +
-                                   " but the camera (" + o.camera.string() + ") is " + std::to_string(camera.width()) +
-                                   "x" + std::to_string(camera.height()));
+      fail_file(frame->source, "image is " + std::to_string(frame->colour.cols) + "x" +
+                                   std::to_string(frame->colour.rows) + " but the camera (" + o.camera.string() +
+                                   ") is " + std::to_string(camera.width()) + "x" + std::to_string(camera.height()));
     if (gt_labels) gt_labels->add(*frame);
     // Pass 0's frames only: the later passes' ground truth is pass 0's, repeated.
     if (ground_truth && source->stats().pass_time_offsets_s.size() <= 1)
@@ -214,23 +218,29 @@ int run_replay(ReplayOptions o) {
   system.finish();
 
   const double replay_fps = static_cast<double>(log.frames) / std::max(1e-9, replay_time.elapsed_s());
-  ReplayRunInfo info{o.sequence, o.camera, o.sync, slam.semantics.enabled ? slam.semantics.model : fs::path(),
-                     slam.semantics.enabled ? slam.semantics.grey_model : fs::path(), {}, {}};
+  ReplayRunInfo info{o.sequence,
+                     o.camera,
+                     o.sync,
+                     slam.semantics.enabled ? slam.semantics.model : fs::path(),
+                     slam.semantics.enabled ? slam.semantics.grey_model : fs::path(),
+                     {},
+                     {}};
   info.interrupted = interrupted;
   if (ground_truth) info.ground_truth = ground_truth->trajectory();
   if (ar_render) info.render = ar_render->finish(replay_fps);
   if (gt_labels && slam.semantics.enabled)
     info.label_accuracy =
         semantics::map_label_accuracy(system.map(), [&](std::size_t index) { return gt_labels->class_ids(index); });
-  const ReplayOutputs outputs =
-      write_replay_outputs({staged.path(), o.save_map.empty() ? staged.path() / "map.fslmap" : staged.staged(o.save_map)},
-                           info, log, system, source->stats());
+  const ReplayOutputs outputs = write_replay_outputs(
+      {staged.path(), o.save_map.empty() ? staged.path() / "map.fslmap" : staged.staged(o.save_map)}, info, log, system,
+      source->stats());
   staged.commit();
   if (staged_render) staged_render->commit();
-  std::printf("replay: %zu frames, %zu tracked, %zu lost, %zu relocalised, %zu map resets, %zu keyframes, "
-              "%zu points -> %s\n",
-              log.frames, log.tracked, log.lost, log.relocalisations, system.map_resets(), system.map().keyframe_count(),
-              outputs.cloud_points, o.out.string().c_str());
+  std::printf(
+      "replay: %zu frames, %zu tracked, %zu lost, %zu relocalised, %zu map resets, %zu keyframes, "
+      "%zu points -> %s\n",
+      log.frames, log.tracked, log.lost, log.relocalisations, system.map_resets(), system.map().keyframe_count(),
+      outputs.cloud_points, o.out.string().c_str());
   // Frames the reader skipped are not in the count above: say so.
   if (const std::size_t skipped = source->stats().frames_skipped_corrupt; skipped > 0)
     std::printf("replay: %zu corrupt frames skipped (not counted above)\n", skipped);
@@ -282,7 +292,8 @@ void add_replay_command(CLI::App& app) {
                   "Ground-truth trajectory, TUM or KITTI (line i: frame i's pose): adds ATE and KITTI's relative "
                   "errors to the report");
   cmd->add_option("--gt-labels", options->gt_labels,
-                  "Folder of ground-truth label PNGs named like the frames (or their names with .png): adds label accuracy to the report "
+                  "Folder of ground-truth label PNGs named like the frames (or their names with .png): adds label "
+                  "accuracy to the report "
                   "(default: label/ beside a synthetic sequence)");
   cmd->add_flag("--sync", options->sync, "Run the map maker inline: reproducible results");
   cmd->add_flag("--free-running", options->free_running,
@@ -312,10 +323,11 @@ void add_replay_command(CLI::App& app) {
   cmd->add_option("--model", options->model, "Forest model for the semantic worker (default: models/default.fsmodel)");
   cmd->add_option("--grey-model", options->grey_model,
                   "Forest model for grey images (a grey camera; `train --grey`; default: models/grey.fsmodel)");
-  auto* render_option = cmd->add_option("--render", options->render,
-                                 "Render the augmented view (AR overlay + map view) of the tracked frames into this "
-                                 "folder: PNG frames, augmented.mp4, contact_sheet.png (replaced as a whole at the end)")
-      ->check(kNonEmptyPath);
+  auto* render_option =
+      cmd->add_option("--render", options->render,
+                      "Render the augmented view (AR overlay + map view) of the tracked frames into this "
+                      "folder: PNG frames, augmented.mp4, contact_sheet.png (replaced as a whole at the end)")
+          ->check(kNonEmptyPath);
   cmd->add_option("--render-every", options->render_every, "With --render: render every Nth frame (default 1)")
       ->check(whole_number(1, 1000000))
       ->needs(render_option);

@@ -75,8 +75,8 @@ void run(const SynthCliOptions& o) {
   StagedFolder staged(o.out);
   if (!o.contact_sheet.empty() && !staged.contains(o.contact_sheet)) require_writable_output(o.contact_sheet);
 
-  spdlog::info("synth: rendering {} frames of {} ({}x{}) into {}", spec.frames, o.scene.string(),
-               spec.camera.width(), spec.camera.height(), o.out.string());
+  spdlog::info("synth: rendering {} frames of {} ({}x{}) into {}", spec.frames, o.scene.string(), spec.camera.width(),
+               spec.camera.height(), o.out.string());
   Progress progress("synth", static_cast<std::size_t>(spec.frames));
   synth::SynthOptions options;
   options.contact_sheet = staged.staged(o.contact_sheet);
@@ -111,7 +111,8 @@ void add_synth_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "synth", "Render a synthetic street sequence from real facade photos: colour, labels, depth, ground truth");
   cmd->add_option("--scene", o->scene, "Scene YAML file (configs/scenes/*.yaml)")->required();
-  cmd->add_option("--out", o->out, "Output folder (replaced as a whole at the end: a new or empty folder, or an earlier synth output)")
+  cmd->add_option("--out", o->out,
+                  "Output folder (replaced as a whole at the end: a new or empty folder, or an earlier synth output)")
       ->required()
       ->check(kNonEmptyPath);
   cmd->add_option("--frames", o->frames, "Number of frames (overrides the scene's `frames`)")

@@ -16,7 +16,8 @@ semantics::Genome resolve_genome(const std::string& value, const std::string& op
   std::error_code ec;
   if (std::filesystem::is_regular_file(value, ec)) return semantics::load_genome(value);
   bool bits_only = true;
-  for (const char c : value) bits_only = bits_only && (c == '0' || c == '1' || std::isspace(static_cast<unsigned char>(c)));
+  for (const char c : value)
+    bits_only = bits_only && (c == '0' || c == '1' || std::isspace(static_cast<unsigned char>(c)));
   // A genome string with a typo still gets Genome::parse's precise message.
   // A bad genome string is a bad command line (exit code 2); a bad genome
   // file, bad input (exit code 1).

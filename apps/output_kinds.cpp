@@ -80,9 +80,10 @@ std::shared_ptr<const OutputFolderLayout> render_folder_layout() {
 
 // segments/N/ after map resets: each map's trajectories (replay_outputs.cpp).
 std::shared_ptr<const OutputFolderLayout> trajectory_segments_layout() {
-  static const auto segment = std::make_shared<const OutputFolderLayout>(OutputFolderLayout{
-      "a replay's trajectory segment",
-      {file_entry("trajectory.txt", tum_trajectory_kind()), file_entry("trajectory_online.txt", tum_trajectory_kind())}});
+  static const auto segment = std::make_shared<const OutputFolderLayout>(
+      OutputFolderLayout{"a replay's trajectory segment",
+                         {file_entry("trajectory.txt", tum_trajectory_kind()),
+                          file_entry("trajectory_online.txt", tum_trajectory_kind())}});
   static const auto layout = std::make_shared<const OutputFolderLayout>(
       OutputFolderLayout{"a replay's trajectory segments", {folder_entry("*", segment)}});
   return layout;
@@ -97,7 +98,8 @@ std::shared_ptr<const OutputFolderLayout> replay_folder_layout() {
           file_entry("trajectory.txt", tum_trajectory_kind()),
           file_entry("trajectory_online.txt", tum_trajectory_kind()),
           file_entry("keyframes.txt", tum_trajectory_kind()),
-          file_entry("map.ply", text_with_line("a labelled point cloud (map.ply)", "comment facadeslam labelled map points")),
+          file_entry("map.ply",
+                     text_with_line("a labelled point cloud (map.ply)", "comment facadeslam labelled map points")),
           file_entry("map.classes.json", json_object_with_keys("map.ply's class table", {"point_cloud", "classes"})),
           file_entry("trajectory.png", png_picture_kind()),
           // The map under the default name or the one --save-map gives it.
@@ -132,17 +134,17 @@ std::shared_ptr<const OutputFolderLayout> synth_folder_layout() {
 }
 
 std::shared_ptr<const OutputFolderLayout> optimise_folder_layout() {
-  static const auto layout = std::make_shared<const OutputFolderLayout>(OutputFolderLayout{
-      "an earlier optimise run folder",
-      {
-          file_entry("split.json", optimise_json_kind()),
-          file_entry("generation-*.json", optimise_json_kind()),
-          file_entry("best.json", optimise_json_kind()),
-          file_entry("fitness.json", optimise_json_kind()),
-          file_entry("best.genome", text_file("a genome")),
-          file_entry("fitness.png", png_picture_kind()),
-          file_entry("best.fsmodel", fsmodel_kind()),
-      }});
+  static const auto layout = std::make_shared<const OutputFolderLayout>(
+      OutputFolderLayout{"an earlier optimise run folder",
+                         {
+                             file_entry("split.json", optimise_json_kind()),
+                             file_entry("generation-*.json", optimise_json_kind()),
+                             file_entry("best.json", optimise_json_kind()),
+                             file_entry("fitness.json", optimise_json_kind()),
+                             file_entry("best.genome", text_file("a genome")),
+                             file_entry("fitness.png", png_picture_kind()),
+                             file_entry("best.fsmodel", fsmodel_kind()),
+                         }});
   return layout;
 }
 

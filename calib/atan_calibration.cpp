@@ -76,7 +76,8 @@ CalibrationResult calibrate_atan(const std::vector<AcceptedView>& views, const C
   }
   // With a tied focal length fy is unused: hold it constant so the normal
   // equations keep full rank.
-  if (options.fix_aspect) problem.SetManifold(intrinsics.data(), new ceres::SubsetManifold(kAtanIntrinsicCount, {kAtanFy}));
+  if (options.fix_aspect)
+    problem.SetManifold(intrinsics.data(), new ceres::SubsetManifold(kAtanIntrinsicCount, {kAtanFy}));
   problem.SetParameterLowerBound(intrinsics.data(), kAtanW, 0.0);
   problem.SetParameterUpperBound(intrinsics.data(), kAtanW, kMaxW);
 
@@ -91,8 +92,7 @@ CalibrationResult calibrate_atan(const std::vector<AcceptedView>& views, const C
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
   spdlog::debug("ATAN fit: {}", summary.BriefReport());
-  if (!summary.IsSolutionUsable())
-    throw Error("ATAN calibration failed to converge (" + summary.message + ")");
+  if (!summary.IsSolutionUsable()) throw Error("ATAN calibration failed to converge (" + summary.message + ")");
   if (options.fix_aspect) intrinsics[kAtanFy] = intrinsics[kAtanFx];
 
   AtanCamera model;

@@ -12,9 +12,9 @@
 namespace facadeslam::calib {
 
 struct BoardSpec {
-  int cols = 9;          // inner corners along a row (the board's x axis)
-  int rows = 6;          // inner corners along a column (the board's y axis)
-  double square = 0.025; // square side in metres, > 0
+  int cols = 9;           // inner corners along a row (the board's x axis)
+  int rows = 6;           // inner corners along a column (the board's y axis)
+  double square = 0.025;  // square side in metres, > 0
 
   int corner_count() const { return cols * rows; }
   cv::Size pattern_size() const { return {cols, rows}; }

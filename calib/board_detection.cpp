@@ -16,8 +16,10 @@ int subpixel_half_window(const std::vector<cv::Point2f>& corners, const BoardSpe
   for (int j = 0; j < board.rows; ++j)
     for (int i = 0; i < board.cols; ++i) {
       const cv::Point2f& c = corners[j * board.cols + i];
-      if (i + 1 < board.cols) min_spacing = std::min(min_spacing, double(cv::norm(c - corners[j * board.cols + i + 1])));
-      if (j + 1 < board.rows) min_spacing = std::min(min_spacing, double(cv::norm(c - corners[(j + 1) * board.cols + i])));
+      if (i + 1 < board.cols)
+        min_spacing = std::min(min_spacing, double(cv::norm(c - corners[j * board.cols + i + 1])));
+      if (j + 1 < board.rows)
+        min_spacing = std::min(min_spacing, double(cv::norm(c - corners[(j + 1) * board.cols + i])));
     }
   return std::clamp(static_cast<int>(std::floor(0.35 * min_spacing)), 3, 11);
 }

@@ -63,12 +63,13 @@ std::string format_report(const CalibrationRun& run) {
                        v.views.size() * static_cast<std::size_t>(q.board.corner_count()));
   if (run.pinhole_rms_px)
     out += printf_string("  %-24s %.4f px (the start of the ATAN fit)\n", "pinhole RMS", *run.pinhole_rms_px);
-  out += printf_string("  %-24s %.0f %% of %dx%d cells, bounding box %.0f %%, hull %.0f %% of the image\n",
-                       "coverage", 100.0 * run.coverage.cell_fraction, kCoverageColumns, kCoverageRows,
+  out += printf_string("  %-24s %.0f %% of %dx%d cells, bounding box %.0f %%, hull %.0f %% of the image\n", "coverage",
+                       100.0 * run.coverage.cell_fraction, kCoverageColumns, kCoverageRows,
                        100.0 * run.coverage.bounding_box_fraction, 100.0 * run.coverage.hull_fraction);
   if (run.coverage.cell_fraction < kLowCellCoverage || run.coverage.hull_fraction < kLowHullCoverage)
-    out += "  note: the corners cover little of the image, so the distortion towards the borders is "
-           "extrapolated; add views with the board near the edges and corners\n";
+    out +=
+        "  note: the corners cover little of the image, so the distortion towards the borders is "
+        "extrapolated; add views with the board near the edges and corners\n";
   return out;
 }
 
@@ -137,12 +138,12 @@ Json report_json(const CalibrationRun& run) {
 
 std::string camera_file_header(const CalibrationRun& run) {
   const CalibrationRequest& q = run.request;
-  return printf_string("Calibrated by `facadeslam calibrate` (model %s%s)\n"
-                       "from %zu of %zu images in %s, board %s inner corners, square %g m.\n"
-                       "RMS reprojection error %.4f px.",
-                       model_kind_name(q.model).c_str(), options_text(run).c_str(), run.views.views.size(),
-                       run.views.image_count, q.images.string().c_str(), q.board.size_text().c_str(),
-                       q.board.square, run.result.rms_px);
+  return printf_string(
+      "Calibrated by `facadeslam calibrate` (model %s%s)\n"
+      "from %zu of %zu images in %s, board %s inner corners, square %g m.\n"
+      "RMS reprojection error %.4f px.",
+      model_kind_name(q.model).c_str(), options_text(run).c_str(), run.views.views.size(), run.views.image_count,
+      q.images.string().c_str(), q.board.size_text().c_str(), q.board.square, run.result.rms_px);
 }
 
 void write_camera_file(const std::filesystem::path& path, const CalibrationRun& run) {

@@ -38,10 +38,10 @@ struct FitOptions {
 
 struct CalibrationResult {
   Camera camera;
-  std::vector<SE3d> T_c_b;                               // board -> camera, per view
-  std::vector<std::vector<Eigen::Vector2d>> residuals;   // per view, per corner, pixels
-  std::vector<double> view_rms_px;                       // per view
-  double rms_px = 0.0;                                   // over all corners
+  std::vector<SE3d> T_c_b;                              // board -> camera, per view
+  std::vector<std::vector<Eigen::Vector2d>> residuals;  // per view, per corner, pixels
+  std::vector<double> view_rms_px;                      // per view
+  double rms_px = 0.0;                                  // over all corners
 };
 
 // Projects the board with `camera` at the given poses and fills in the

@@ -26,7 +26,8 @@ CoverageFigures compute_coverage(const std::vector<AcceptedView>& views, const c
   if (all.empty()) return figures;
 
   const double image_area = static_cast<double>(image_size.area());
-  const auto covered = std::count_if(figures.cell_counts.begin(), figures.cell_counts.end(), [](int n) { return n > 0; });
+  const auto covered =
+      std::count_if(figures.cell_counts.begin(), figures.cell_counts.end(), [](int n) { return n > 0; });
   figures.cell_fraction = static_cast<double>(covered) / static_cast<double>(figures.cell_counts.size());
   float x0 = all[0].x, x1 = all[0].x, y0 = all[0].y, y1 = all[0].y;
   for (const cv::Point2f& c : all) {

@@ -21,7 +21,8 @@ bool has_image_extension(const std::filesystem::path& path) {
 
 std::vector<std::filesystem::path> list_image_files(const std::filesystem::path& folder) {
   std::error_code ec;
-  if (!std::filesystem::exists(folder, ec)) fail_file(folder, "no such folder (expected a folder of chessboard images)");
+  if (!std::filesystem::exists(folder, ec))
+    fail_file(folder, "no such folder (expected a folder of chessboard images)");
   if (!std::filesystem::is_directory(folder, ec))
     fail_file(folder, "not a folder (expected a folder of chessboard images)");
 

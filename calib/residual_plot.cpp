@@ -92,8 +92,9 @@ cv::Mat render_residual_plot(const ViewCollection& views, const CalibrationResul
             cursor);
   text_line(image, format("RMS reprojection error %.3f px", result.rms_px), cursor);
   text_line(image, format("residual vectors x%g", scale), cursor);
-  text_line(image, format("covered cells %.0f %%", 100.0 * coverage.cell_fraction) +
-                       format(" (%.0f", double(kCoverageColumns)) + format("x%.0f grid)", double(kCoverageRows)),
+  text_line(image,
+            format("covered cells %.0f %%", 100.0 * coverage.cell_fraction) +
+                format(" (%.0f", double(kCoverageColumns)) + format("x%.0f grid)", double(kCoverageRows)),
             cursor);
   text_line(image, format("corner hull %.0f %% of the image", 100.0 * coverage.hull_fraction), cursor);
   cursor.y += kLineHeight / 2;
@@ -116,8 +117,8 @@ cv::Mat render_residual_plot(const ViewCollection& views, const CalibrationResul
   return image;
 }
 
-void save_residual_plot(const std::filesystem::path& path, const ViewCollection& views,
-                        const CalibrationResult& result, const CoverageFigures& coverage) {
+void save_residual_plot(const std::filesystem::path& path, const ViewCollection& views, const CalibrationResult& result,
+                        const CoverageFigures& coverage) {
   if (path.extension() != ".png") fail_file(path, "the coverage plot must be a .png file");
   plot::save_png(path, render_residual_plot(views, result, coverage));
 }

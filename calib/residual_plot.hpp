@@ -26,7 +26,7 @@ cv::Mat render_residual_plot(const ViewCollection& views, const CalibrationResul
                              const CoverageFigures& coverage);
 
 // Renders and writes a PNG atomically; the name must end in ".png".
-void save_residual_plot(const std::filesystem::path& path, const ViewCollection& views,
-                        const CalibrationResult& result, const CoverageFigures& coverage);
+void save_residual_plot(const std::filesystem::path& path, const ViewCollection& views, const CalibrationResult& result,
+                        const CoverageFigures& coverage);
 
 }  // namespace facadeslam::calib

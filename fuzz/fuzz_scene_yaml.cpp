@@ -31,8 +31,8 @@ void write_scene_neighbours(const std::filesystem::path& folder) {
              "distortion: [0, 0, 0, 0, 0]\n");
   cv::Mat photo(48, 64, CV_8UC3, cv::Scalar(90, 120, 150));
   cv::rectangle(photo, cv::Rect(10, 8, 12, 16), cv::Scalar(30, 30, 30), cv::FILLED);
-  cv::Mat label(48, 64, CV_8UC3, cv::Scalar(0, 0, 128));  // building (BGR of 128,0,0)
-  cv::rectangle(label, cv::Rect(10, 8, 12, 16), cv::Scalar(128, 0, 0), cv::FILLED);   // window
+  cv::Mat label(48, 64, CV_8UC3, cv::Scalar(0, 0, 128));                               // building (BGR of 128,0,0)
+  cv::rectangle(label, cv::Rect(10, 8, 12, 16), cv::Scalar(128, 0, 0), cv::FILLED);    // window
   cv::rectangle(label, cv::Rect(2, 30, 38, 16), cv::Scalar(128, 0, 128), cv::FILLED);  // car
   cv::rectangle(label, cv::Rect(44, 28, 16, 18), cv::Scalar(0, 128, 0), cv::FILLED);   // vegetation
   cv::imwrite((folder / "photo.png").string(), photo);

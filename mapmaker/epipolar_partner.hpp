@@ -21,7 +21,7 @@
 namespace facadeslam {
 
 struct EpipolarPartnerOptions {
-  double min_baseline = 0.02;         // x the new keyframe's mean scene depth
+  double min_baseline = 0.02;  // x the new keyframe's mean scene depth
   double max_axis_angle_deg = 45.0;
   // A second partner at least this far away (x the mean scene depth; 0:
   // none). Moving forward, the near partner leaves the points ahead, which

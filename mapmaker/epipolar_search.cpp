@@ -89,8 +89,8 @@ NewPoints epipolar_new_points(Map& map, const Camera& camera, const std::shared_
         const Eigen::Vector3d p_w = T_new_w.inverse() * (ray * mean_depth);
         const Eigen::Vector3d p_other = T_other_w * p_w;
         if (p_other.z() <= 1e-6) continue;
-        warp = patch::patch_warp(p_other, T_other_w.rotation_matrix(),
-                                 source_geometry(camera, T_new_w, source, p_w), camera);
+        warp = patch::patch_warp(p_other, T_other_w.rotation_matrix(), source_geometry(camera, T_new_w, source, p_w),
+                                 camera);
       }
       const patch::PatchTemplate tpl = patch::make_patch_template(source, warp, {});
       if (!tpl.valid() || (!options.warp_templates && tpl.search_level != level)) continue;
@@ -157,8 +157,8 @@ NewPoints epipolar_new_points(Map& map, const Camera& camera, const std::shared_
       // needs 2^L times the parallax of a level-0 point to be as certain.
       if (parallax_deg < options.min_parallax_deg * scale) continue;
 
-      auto point = std::make_shared<MapPoint>(map.new_point_id(), source,
-                                              source_geometry(camera, T_new_w, source, *p_w));
+      auto point =
+          std::make_shared<MapPoint>(map.new_point_id(), source, source_geometry(camera, T_new_w, source, *p_w));
       // Recorded when the points are published (Map::add). A level's
       // candidates look at measurements of their own and the next coarser
       // level only, so the later levels' searches do not miss them.

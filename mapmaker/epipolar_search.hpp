@@ -21,9 +21,9 @@
 namespace facadeslam {
 
 struct EpipolarSearchStats {
-  int candidates = 0;    // corners tried
-  int matched = 0;       // a patch match was found
-  int triangulated = 0;  // kept as new points
+  int candidates = 0;                                        // corners tried
+  int matched = 0;                                           // a patch match was found
+  int triangulated = 0;                                      // kept as new points
   std::array<int, kPyramidLevels> triangulated_per_level{};  // ... by source level
 };
 

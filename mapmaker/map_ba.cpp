@@ -45,8 +45,8 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
     for (const auto& [point_id, m] : kf->measurements())
       if (weight.at(point_id) > 0.0) refs.push_back({kf->id(), point_id});
   if (refs.empty()) return report;
-  const BaSelection selection = newest ? local_ba_selection(centres, refs, *newest, selection_options)
-                                       : global_ba_selection(centres, refs);
+  const BaSelection selection =
+      newest ? local_ba_selection(centres, refs, *newest, selection_options) : global_ba_selection(centres, refs);
 
   // Copy into the problem.
   BaProblem problem;

@@ -28,7 +28,7 @@ constexpr KeyFrame::Id kSingleViewGraceKeyframes = 3;
 
 MapMaker::MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options,
                    KeyFramePointsQueue* new_points)
-    : camera_(std::move(camera)), map_(map), queue_(queue), options_(std::move(options)), new_points_(new_points) {}
+    : camera_(camera), map_(map), queue_(queue), options_(std::move(options)), new_points_(new_points) {}
 
 void MapMaker::hand_off(const std::shared_ptr<KeyFrame>& keyframe, const NewPoints* only) {
   if (!new_points_ || !keyframe) return;
@@ -83,7 +83,8 @@ std::optional<SE3d> MapMaker::initialise(const InitialViews& views) {
     }
 
   const Stopwatch t0;
-  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt, {}, ba_point_weight());
+  const MapBaReport ba =
+      adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt, {}, ba_point_weight());
   remove_outlier_points();
   update_depth_stats(*kf0);
   update_depth_stats(*kf1);
@@ -122,6 +123,7 @@ void MapMaker::update_depth_stats(KeyFrame& keyframe) {
   std::sort(depths.begin(), depths.end());
   const double median = depths[depths.size() / 2];
   std::vector<double> deviations;
+  deviations.reserve(depths.size());
   for (double d : depths) deviations.push_back(std::abs(d - median));
   std::sort(deviations.begin(), deviations.end());
   const double sigma = 1.4826 * deviations[deviations.size() / 2];
@@ -143,8 +145,8 @@ std::vector<std::shared_ptr<KeyFrame>> MapMaker::epipolar_partners(const KeyFram
   if (!moving_forward(keyframe.T_c_w(), poses[*near], options_.epipolar_partner)) return partners;
   // Forward over the far partner's longer baseline too: a hand-held camera's
   // shake can make one short step look forward on a walk that is not.
-  if (const auto far = choose_far_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, near,
-                                                   options_.epipolar_partner);
+  if (const auto far =
+          choose_far_epipolar_partner(keyframe.T_c_w(), keyframe.mean_depth(), poses, near, options_.epipolar_partner);
       far && moving_forward(keyframe.T_c_w(), poses[*far], options_.epipolar_partner))
     partners.push_back(others[*far]);
   return partners;
@@ -155,8 +157,8 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   Measurements measurements;
   for (const auto& m : candidate.measurements)
     if (!m.point->is_bad() && map_.point(m.point->id())) measurements[m.point->id()] = {m.level, m.pixel, false};
-  auto kf = std::make_shared<KeyFrame>(map_.new_keyframe_id(), candidate.frame, candidate.T_c_w,
-                                       std::move(measurements));
+  auto kf =
+      std::make_shared<KeyFrame>(map_.new_keyframe_id(), candidate.frame, candidate.T_c_w, std::move(measurements));
   map_.add_keyframe(kf);
   update_depth_stats(*kf);
   if (options_.newest_view_templates)
@@ -199,9 +201,8 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
     created.append(std::move(more));
   }
 
-  const MapBaReport ba =
-      adjust_map(map_, camera_, BundleAdjuster(options_.local_ba), kf->id(), options_.local_ba_selection,
-                 ba_point_weight());
+  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.local_ba), kf->id(),
+                                    options_.local_ba_selection, ba_point_weight());
   remove_outlier_points();
   update_depth_stats(*kf);
   {
@@ -300,7 +301,8 @@ void MapMaker::remove_outlier_points() {
                                     .max_found_ratio = options_.outlier_max_found_ratio,
                                     .grace_keyframes = kSingleViewGraceKeyframes};
   IsLeftOut left_out;
-  if (options_.labels.moving.any()) left_out = [this](const MapPoint& point) { return options_.labels.left_out(point); };
+  if (options_.labels.moving.any())
+    left_out = [this](const MapPoint& point) { return options_.labels.left_out(point); };
   const std::vector<std::shared_ptr<MapPoint>> outliers =
       points_to_cull(map_.keyframes(), map_.points(), culling, left_out);
   if (!outliers.empty())

@@ -27,10 +27,10 @@ struct EpipolarSearchOptions {
   // partner (EpipolarPartnerOptions::far_baseline): from the near one alone
   // the far points are too poorly triangulated (street-drive 0.02 -> 9.7 %).
   double min_far_depth_factor = 5.0;
-  double max_line_distance = 1.5;            // corners within this of the epipolar line, level pixels
-  float max_zmssd_per_pixel = 400.f;         // patch match bound (grey levels^2 per pixel)
-  double max_reprojection_px = 2.0;          // level pixels, in both views after triangulation
-  double min_parallax_deg = 0.5;             // rays must not be near parallel (x 2^level)
+  double max_line_distance = 1.5;     // corners within this of the epipolar line, level pixels
+  float max_zmssd_per_pixel = 400.f;  // patch match bound (grey levels^2 per pixel)
+  double max_reprojection_px = 2.0;   // level pixels, in both views after triangulation
+  double min_parallax_deg = 0.5;      // rays must not be near parallel (x 2^level)
   // Warp each template into the other keyframe at the mean scene depth (on a
   // plane facing the new keyframe) instead of comparing same-level patches
   // unwarped: forward motion scales patches between keyframes.

@@ -15,8 +15,7 @@ struct MeasuringKeyframes {
 
 std::vector<std::shared_ptr<MapPoint>> points_to_cull(const std::vector<std::shared_ptr<KeyFrame>>& keyframes,
                                                       const std::vector<std::shared_ptr<MapPoint>>& points,
-                                                      const PointCullingOptions& options,
-                                                      const IsLeftOut& left_out) {
+                                                      const PointCullingOptions& options, const IsLeftOut& left_out) {
   // Measurement counts over all keyframes (the map maker, their only writer,
   // reads them without a lock).
   std::unordered_map<MapPoint::Id, MeasuringKeyframes> measured;

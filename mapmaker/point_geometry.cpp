@@ -12,9 +12,9 @@ PointGeometry source_geometry(const Camera& camera, const SE3d& T_src_w, const P
   };
   const double depth = (T_src_w * p_w).z();
   const SE3d T_w_src = T_src_w.inverse();
-  PointGeometry g = fronto_parallel_geometry(T_w_src.rotation_matrix(), T_w_src.translation(), ray(at_level),
-                                             ray(at_level + Eigen::Vector2d(1, 0)),
-                                             ray(at_level + Eigen::Vector2d(0, 1)), depth);
+  PointGeometry g =
+      fronto_parallel_geometry(T_w_src.rotation_matrix(), T_w_src.translation(), ray(at_level),
+                               ray(at_level + Eigen::Vector2d(1, 0)), ray(at_level + Eigen::Vector2d(0, 1)), depth);
   // Keep the position exactly as given (BA's result), not re-derived from the ray.
   g.p_w = p_w;
   g.normal_w = (T_w_src.translation() - p_w).normalized();

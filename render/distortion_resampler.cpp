@@ -13,8 +13,10 @@ namespace facadeslam::render {
 bool needs_resampling(const Camera& camera) {
   return camera.visit([](const auto& m) {
     using M = std::decay_t<decltype(m)>;
-    if constexpr (std::is_same_v<M, PinholeRadTan>) return m.has_distortion();
-    else return m.w != 0.0;
+    if constexpr (std::is_same_v<M, PinholeRadTan>)
+      return m.has_distortion();
+    else
+      return m.w != 0.0;
   });
 }
 
@@ -45,8 +47,7 @@ DistortionResampler::DistortionResampler(const Camera& camera, int margin, int m
   // The image is the span plus the margins plus up to two pixels of rounding.
   const double room = max_size - 2.0 * margin - 2.0;
   if (room <= 0.0) throw Error("render: the virtual camera's size limit leaves no room inside its margins");
-  const double scale =
-      std::min({1.0, room / (camera.fx() * (max_x - min_x)), room / (camera.fy() * (max_y - min_y))});
+  const double scale = std::min({1.0, room / (camera.fx() * (max_x - min_x)), room / (camera.fy() * (max_y - min_y))});
   virtual_.fx = camera.fx() * scale;
   virtual_.fy = camera.fy() * scale;
   virtual_.cx = margin - virtual_.fx * min_x;
@@ -119,7 +120,8 @@ cv::Mat DistortionResampler::resample_cubic(const cv::Mat& src) const {
         float sum = 0.f;
         for (int j = 0; j < 4; ++j) {
           const float* row = src.ptr<float>(y0 - 1 + j) + (x0 - 1) * channels + c;
-          sum += wy[j] * (wx[0] * row[0] + wx[1] * row[channels] + wx[2] * row[2 * channels] + wx[3] * row[3 * channels]);
+          sum +=
+              wy[j] * (wx[0] * row[0] + wx[1] * row[channels] + wx[2] * row[2 * channels] + wx[3] * row[3 * channels]);
         }
         dst[x * channels + c] = sum;
       }

@@ -21,6 +21,8 @@
 namespace facadeslam::render {
 
 // X-macro of the entry points, without the "gl" prefix.
+// (a table: not for clang-format)
+// clang-format off
 #define FACADESLAM_GL_FUNCTIONS(X)                                                            \
   X(GetString) X(GetStringi) X(GetIntegerv) X(GetFloatv) X(GetError) X(Finish)                \
   X(Viewport) X(Enable) X(Disable) X(DepthFunc) X(DepthMask) X(ClipControl) X(LineWidth)      \
@@ -37,6 +39,7 @@ namespace facadeslam::render {
   X(DeleteShader) X(CreateProgram) X(AttachShader) X(LinkProgram) X(GetProgramiv)             \
   X(GetProgramInfoLog) X(DeleteProgram) X(UseProgram) X(GetUniformLocation)                   \
   X(Uniform1i) X(Uniform1ui) X(Uniform1f) X(Uniform4f) X(UniformMatrix3fv)
+// clang-format on
 
 struct GlFunctions {
 #define FACADESLAM_GL_MEMBER(name) decltype(&::gl##name) name = nullptr;

@@ -11,8 +11,7 @@ namespace facadeslam::render {
 class GlProgram {
  public:
   GlProgram() = default;
-  GlProgram(const GlFunctions& gl, const std::string& name, const char* vertex_source,
-            const char* fragment_source);
+  GlProgram(const GlFunctions& gl, const std::string& name, const char* vertex_source, const char* fragment_source);
   ~GlProgram();
   GlProgram(GlProgram&& other) noexcept;
   GlProgram& operator=(GlProgram&& other) noexcept;

@@ -57,8 +57,13 @@ struct GpuVertex {
 };
 
 GpuVertex vertex(const Eigen::Vector3d& p_c, const cv::Vec3b& bgr) {
-  return {static_cast<float>(p_c.x()), static_cast<float>(p_c.y()), static_cast<float>(p_c.z()),
-          bgr[2], bgr[1], bgr[0], 255};
+  return {static_cast<float>(p_c.x()),
+          static_cast<float>(p_c.y()),
+          static_cast<float>(p_c.z()),
+          bgr[2],
+          bgr[1],
+          bgr[0],
+          255};
 }
 
 // A keyframe as a pyramid: apex at the camera centre, base at
@@ -67,10 +72,9 @@ void add_pyramid(const Eigen::Isometry3d& T_view_kf, double depth, const cv::Vec
                  std::vector<GpuVertex>& lines) {
   const double w = 0.6 * depth, h = 0.45 * depth;
   const Eigen::Vector3d apex = T_view_kf * Eigen::Vector3d::Zero();
-  const std::array<Eigen::Vector3d, 4> base{T_view_kf * Eigen::Vector3d(-w, -h, depth),
-                                            T_view_kf * Eigen::Vector3d(w, -h, depth),
-                                            T_view_kf * Eigen::Vector3d(w, h, depth),
-                                            T_view_kf * Eigen::Vector3d(-w, h, depth)};
+  const std::array<Eigen::Vector3d, 4> base{
+      T_view_kf * Eigen::Vector3d(-w, -h, depth), T_view_kf * Eigen::Vector3d(w, -h, depth),
+      T_view_kf * Eigen::Vector3d(w, h, depth), T_view_kf * Eigen::Vector3d(-w, h, depth)};
   for (int i = 0; i < 4; ++i) {
     lines.push_back(vertex(apex, bgr));
     lines.push_back(vertex(base[i], bgr));
@@ -163,8 +167,8 @@ struct MapView::Impl {
   }
 
   void upload(const std::vector<map_view_detail::GpuVertex>& vertices) {
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(vertices[0])),
-                  vertices.data(), GL_STREAM_DRAW);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(vertices[0])), vertices.data(),
+                  GL_STREAM_DRAW);
   }
 };
 

@@ -33,7 +33,7 @@ struct LegendEntry {
 
 struct MapViewContent {
   std::vector<Eigen::Vector3f> points_w;
-  std::vector<cv::Vec3b> colours_bgr;             // one per point
+  std::vector<cv::Vec3b> colours_bgr;              // one per point
   std::vector<Eigen::Isometry3d> keyframes_T_c_w;  // drawn as pyramids; may be empty
   std::vector<Eigen::Vector3d> trajectory_w;       // camera centres in time order; may be empty
   std::vector<LegendEntry> legend;                 // empty: no legend
@@ -53,11 +53,11 @@ struct MapViewStyle {
   // The dots' outer ring is drawn darker, so that light classes (unlabelled
   // is light grey) stand out from a light background. 0: flat dots.
   float outline_pixels = 1.f;
-  float frustum_line_width = 1.f;            // pixels
-  float trajectory_line_width = 3.f;         // pixels
-  cv::Vec3b keyframe_bgr{200, 110, 20};      // a strong blue, no class has it
-  cv::Vec3b trajectory_bgr{0, 140, 255};     // orange, no class has it
-  double frustum_depth = 0.1;                // pyramid height in world units
+  float frustum_line_width = 1.f;         // pixels
+  float trajectory_line_width = 3.f;      // pixels
+  cv::Vec3b keyframe_bgr{200, 110, 20};   // a strong blue, no class has it
+  cv::Vec3b trajectory_bgr{0, 140, 255};  // orange, no class has it
+  double frustum_depth = 0.1;             // pyramid height in world units
 };
 
 class MapView {

@@ -22,9 +22,9 @@ Eigen::Vector3d orthogonal_unit(const Eigen::Vector3d& v, const Eigen::Vector3d&
 }
 
 double percentile(std::vector<double> values, double percent) {
-  const auto rank = static_cast<std::size_t>(
-      std::clamp(std::round(percent / 100.0 * static_cast<double>(values.size() - 1)), 0.0,
-                 static_cast<double>(values.size() - 1)));
+  const auto rank =
+      static_cast<std::size_t>(std::clamp(std::round(percent / 100.0 * static_cast<double>(values.size() - 1)), 0.0,
+                                          static_cast<double>(values.size() - 1)));
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank), values.end());
   return values[rank];
 }
@@ -126,7 +126,8 @@ ViewAxes view_axes_from_cameras(const std::vector<Eigen::Isometry3d>& keyframes_
   axes.up_w = up.normalized();
   axes.forward_w = orthogonal_unit(forward, axes.up_w);
   // Cameras that looked every way around: the first one's view.
-  if (axes.forward_w.isZero()) axes.forward_w = orthogonal_unit(keyframes_T_c_w.front().linear().row(2).transpose(), axes.up_w);
+  if (axes.forward_w.isZero())
+    axes.forward_w = orthogonal_unit(keyframes_T_c_w.front().linear().row(2).transpose(), axes.up_w);
   // A first camera looking straight up or down: any horizontal direction.
   if (axes.forward_w.isZero()) axes.forward_w = orthogonal_unit(Eigen::Vector3d::UnitX(), axes.up_w);
   if (axes.forward_w.isZero()) axes.forward_w = orthogonal_unit(Eigen::Vector3d::UnitZ(), axes.up_w);
@@ -134,8 +135,8 @@ ViewAxes view_axes_from_cameras(const std::vector<Eigen::Isometry3d>& keyframes_
 }
 
 MapViewFraming frame_map_view(const std::vector<Eigen::Vector3f>& points_w,
-                              const std::vector<Eigen::Vector3d>& anchors_w, const ViewAxes& axes,
-                              MapViewKind kind, int width, int height, const FramingOptions& options) {
+                              const std::vector<Eigen::Vector3d>& anchors_w, const ViewAxes& axes, MapViewKind kind,
+                              int width, int height, const FramingOptions& options) {
   using namespace map_view_framing_detail;
   if (width < 16 || height < 16) throw Error("render: a map view needs at least 16x16 pixels");
   if (!(options.low_percentile >= 0 && options.low_percentile < options.high_percentile &&

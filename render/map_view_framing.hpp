@@ -39,10 +39,10 @@ struct ViewAxes {
 ViewAxes view_axes_from_cameras(const std::vector<Eigen::Isometry3d>& keyframes_T_c_w);
 
 struct FramingOptions {
-  double low_percentile = 2.0;   // the framed box, per axis, in percent
+  double low_percentile = 2.0;  // the framed box, per axis, in percent
   double high_percentile = 98.0;
-  double elevation_deg = 35.0;   // oblique: the view's angle below the horizontal
-  double margin = 0.05;          // fraction of each image side left free around the map
+  double elevation_deg = 35.0;  // oblique: the view's angle below the horizontal
+  double margin = 0.05;         // fraction of each image side left free around the map
 };
 
 struct MapViewFraming {
@@ -52,7 +52,7 @@ struct MapViewFraming {
 
 // Frames `points_w` (robustly) and `anchors_w` (always) in a width x height picture.
 MapViewFraming frame_map_view(const std::vector<Eigen::Vector3f>& points_w,
-                              const std::vector<Eigen::Vector3d>& anchors_w, const ViewAxes& axes,
-                              MapViewKind kind, int width, int height, const FramingOptions& options = {});
+                              const std::vector<Eigen::Vector3d>& anchors_w, const ViewAxes& axes, MapViewKind kind,
+                              int width, int height, const FramingOptions& options = {});
 
 }  // namespace facadeslam::render

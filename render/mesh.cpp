@@ -4,9 +4,8 @@
 
 namespace facadeslam::render {
 
-Mesh make_textured_quad(const Eigen::Vector3d& top_left, const Eigen::Vector3d& right,
-                        const Eigen::Vector3d& down, TextureId colour, TextureId labels,
-                        std::uint8_t label, int columns, int rows) {
+Mesh make_textured_quad(const Eigen::Vector3d& top_left, const Eigen::Vector3d& right, const Eigen::Vector3d& down,
+                        TextureId colour, TextureId labels, std::uint8_t label, int columns, int rows) {
   if (columns < 1 || rows < 1) throw Error("render: a quad needs at least one cell in each direction");
   Mesh mesh;
   mesh.colour = colour;

@@ -42,8 +42,7 @@ struct Mesh {
 // (0, 1). The point top_left + a right + b down has uv (a, b). It is split
 // into `columns` x `rows` cells so that it can be bent afterwards by moving
 // vertices (swaying vegetation); vertex (c, r) is at index r (columns + 1) + c.
-Mesh make_textured_quad(const Eigen::Vector3d& top_left, const Eigen::Vector3d& right,
-                        const Eigen::Vector3d& down, TextureId colour, TextureId labels,
-                        std::uint8_t label = 0, int columns = 1, int rows = 1);
+Mesh make_textured_quad(const Eigen::Vector3d& top_left, const Eigen::Vector3d& right, const Eigen::Vector3d& down,
+                        TextureId colour, TextureId labels, std::uint8_t label = 0, int columns = 1, int rows = 1);
 
 }  // namespace facadeslam::render

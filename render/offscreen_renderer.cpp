@@ -93,8 +93,8 @@ bool same_camera(const Camera& a, const Camera& b) {
     using M = std::decay_t<decltype(ma)>;
     const M& mb = std::get<M>(b.model());
     if constexpr (std::is_same_v<M, PinholeRadTan>)
-      return ma.fx == mb.fx && ma.fy == mb.fy && ma.cx == mb.cx && ma.cy == mb.cy && ma.k1 == mb.k1 &&
-             ma.k2 == mb.k2 && ma.p1 == mb.p1 && ma.p2 == mb.p2 && ma.k3 == mb.k3;
+      return ma.fx == mb.fx && ma.fy == mb.fy && ma.cx == mb.cx && ma.cy == mb.cy && ma.k1 == mb.k1 && ma.k2 == mb.k2 &&
+             ma.p1 == mb.p1 && ma.p2 == mb.p2 && ma.k3 == mb.k3;
     else
       return ma.fx == mb.fx && ma.fy == mb.fy && ma.cx == mb.cx && ma.cy == mb.cy && ma.w == mb.w;
   });
@@ -132,7 +132,8 @@ struct Renderer::Impl {
   explicit Impl(RendererSettings s)
       : settings(s),
         gl(context.gl()),
-        mesh_program(gl, "mesh", vertex_shader_with_camera_projection(kMeshVertexShaderBody).c_str(), kMeshFragmentShader),
+        mesh_program(gl, "mesh", vertex_shader_with_camera_projection(kMeshVertexShaderBody).c_str(),
+                     kMeshFragmentShader),
         sky_program(gl, "sky", kSkyVertexShader, kSkyFragmentShader) {
     gl.GenVertexArrays(1, &vao);
     gl.GenVertexArrays(1, &sky_vao);
@@ -194,8 +195,7 @@ struct Renderer::Impl {
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     const cv::Mat data = labels.isContinuous() ? labels : labels.clone();
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, data.cols, data.rows, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
-                  data.data);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, data.cols, data.rows, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, data.data);
     gl.BindTexture(GL_TEXTURE_2D, 0);
     return id;
   }
@@ -311,8 +311,8 @@ struct Renderer::Impl {
       set_camera_projection(gl, mesh_program, k, settings.near);
       gl.BindVertexArray(vao);
       gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
-      gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(GpuVertex)),
-                    vertices.data(), GL_STREAM_DRAW);
+      gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(GpuVertex)), vertices.data(),
+                    GL_STREAM_DRAW);
       gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                     indices.data(), GL_STREAM_DRAW);
       const GLint use_label_texture = mesh_program.uniform("use_label_texture");

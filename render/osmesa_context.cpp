@@ -14,13 +14,20 @@ constexpr int kTokenSize = 16;
 OsMesaContext::OsMesaContext() : token_buffer_(kTokenSize * kTokenSize * 4, 0) {
   // No depth/stencil on OSMesa's own buffer: the framebuffer objects carry
   // their own depth attachment.
-  const int attributes[] = {OSMESA_FORMAT,        OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,    0,
-                            OSMESA_STENCIL_BITS,  0,
-                            OSMESA_ACCUM_BITS,    0,
-                            OSMESA_PROFILE,       OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 4,
-                            OSMESA_CONTEXT_MINOR_VERSION, 5,
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            0,
+                            OSMESA_STENCIL_BITS,
+                            0,
+                            OSMESA_ACCUM_BITS,
+                            0,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            4,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            5,
                             0};
   context_ = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!context_)

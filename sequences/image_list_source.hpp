@@ -22,8 +22,7 @@ struct ImageEntry {
 
 // Keeps the entries that start/stride/limit select. Error naming `origin`
 // when none are left although the sequence is not empty.
-std::vector<ImageEntry> select_entries(std::vector<ImageEntry> all,
-                                       const SequenceOptions& options,
+std::vector<ImageEntry> select_entries(std::vector<ImageEntry> all, const SequenceOptions& options,
                                        const std::filesystem::path& origin);
 
 class ImageListSource : public FrameSource {

@@ -23,8 +23,7 @@ void fail_line(const std::filesystem::path& path, std::size_t line, const std::s
   fail_file(path, "line " + std::to_string(line) + ": " + what);
 }
 
-std::vector<ListLine> read_list_file(const std::filesystem::path& path,
-                                     const std::string& what_expected) {
+std::vector<ListLine> read_list_file(const std::filesystem::path& path, const std::string& what_expected) {
   std::ifstream in(path);
   if (!in) fail_file(path, "cannot open the file (expected " + what_expected + ")");
   std::vector<ListLine> lines;
@@ -42,8 +41,7 @@ std::vector<ListLine> read_list_file(const std::filesystem::path& path,
   return lines;
 }
 
-double parse_timestamp(std::string_view field, const std::filesystem::path& path,
-                       std::size_t line) {
+double parse_timestamp(std::string_view field, const std::filesystem::path& path, std::size_t line) {
   const std::string text(field);
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
@@ -52,13 +50,12 @@ double parse_timestamp(std::string_view field, const std::filesystem::path& path
   return value;
 }
 
-void require_increasing(double previous, std::size_t previous_line, double current,
-                        std::size_t line, const std::filesystem::path& path) {
+void require_increasing(double previous, std::size_t previous_line, double current, std::size_t line,
+                        const std::filesystem::path& path) {
   if (current > previous) return;
   fail_line(path, line,
-            "timestamp " + format_seconds(current) + " is not after the previous one (" +
-                format_seconds(previous) + " on line " + std::to_string(previous_line) +
-                "); expected strictly increasing timestamps");
+            "timestamp " + format_seconds(current) + " is not after the previous one (" + format_seconds(previous) +
+                " on line " + std::to_string(previous_line) + "); expected strictly increasing timestamps");
 }
 
 }  // namespace facadeslam

@@ -21,12 +21,10 @@ int natural_compare(std::string_view a, std::string_view b) {
       while (j < b.size() && is_digit(b[j])) ++j;
       std::string_view da = a.substr(a_begin, i - a_begin);
       std::string_view db = b.substr(b_begin, j - b_begin);
-      const std::size_t zeros_a = da.find_first_not_of('0') == std::string_view::npos
-                                      ? da.size()
-                                      : da.find_first_not_of('0');
-      const std::size_t zeros_b = db.find_first_not_of('0') == std::string_view::npos
-                                      ? db.size()
-                                      : db.find_first_not_of('0');
+      const std::size_t zeros_a =
+          da.find_first_not_of('0') == std::string_view::npos ? da.size() : da.find_first_not_of('0');
+      const std::size_t zeros_b =
+          db.find_first_not_of('0') == std::string_view::npos ? db.size() : db.find_first_not_of('0');
       // Compare the significant digits: longer is larger, then digit by digit.
       // Never converted to an integer, so arbitrarily long runs are fine.
       const std::string_view sa = da.substr(zeros_a);

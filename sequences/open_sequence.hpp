@@ -22,7 +22,6 @@ SequenceKind detect_sequence_kind(const std::filesystem::path& path);
 // Opens the reader (listing or opening only; frames are decoded by next()).
 // Error on invalid options, on a timestamps file given for anything but an
 // image folder, and on every bad input the readers report.
-std::unique_ptr<FrameSource> open_sequence(const std::filesystem::path& path,
-                                           const SequenceOptions& options);
+std::unique_ptr<FrameSource> open_sequence(const std::filesystem::path& path, const SequenceOptions& options);
 
 }  // namespace facadeslam

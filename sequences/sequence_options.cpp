@@ -16,8 +16,7 @@ void validate(const SequenceOptions& options) {
   if (options.loops == 0 || options.loops > kMaxLoops)
     throw Error("sequence options: loops must be between 1 and 1000000 (got " + std::to_string(options.loops) + ")");
   if (!std::isfinite(options.fps) || options.fps <= 0.0)
-    throw Error("sequence options: fps must be a positive number (got " +
-                std::to_string(options.fps) + ")");
+    throw Error("sequence options: fps must be a positive number (got " + std::to_string(options.fps) + ")");
 }
 
 CorruptPolicy corrupt_policy_from_string(const std::string& text) {
@@ -26,8 +25,6 @@ CorruptPolicy corrupt_policy_from_string(const std::string& text) {
   throw Error("sequence options: on-corrupt must be 'stop' or 'skip' (got '" + text + "')");
 }
 
-std::string to_string(CorruptPolicy policy) {
-  return policy == CorruptPolicy::skip ? "skip" : "stop";
-}
+std::string to_string(CorruptPolicy policy) { return policy == CorruptPolicy::skip ? "skip" : "stop"; }
 
 }  // namespace facadeslam

@@ -29,8 +29,7 @@ VideoSource::VideoSource(const fs::path& file, const SequenceOptions& options)
   validate(options);
   std::error_code ec;
   if (!fs::exists(file, ec)) fail_file(file, std::string("no such file (") + kExpectedVideo + ")");
-  if (fs::is_directory(file, ec))
-    fail_file(file, std::string("is a folder (") + kExpectedVideo + ")");
+  if (fs::is_directory(file, ec)) fail_file(file, std::string("is a folder (") + kExpectedVideo + ")");
   bool opened = false;
   {
     // OpenCV tries every backend and logs each failure (GStreamer pipeline,
@@ -86,8 +85,7 @@ void VideoSource::warn_if_short() const {
   // Container counts are estimates for some formats; only a clear shortfall
   // (a truncated or damaged file) is worth a warning.
   if (frame_count_ > next_index_ + 1)
-    spdlog::warn("{}: video ended after {} frames although it announces {}", path_.string(),
-                 next_index_, frame_count_);
+    spdlog::warn("{}: video ended after {} frames although it announces {}", path_.string(), next_index_, frame_count_);
 }
 
 std::optional<Frame> VideoSource::next() {
@@ -109,25 +107,21 @@ std::optional<Frame> VideoSource::next() {
     cv::Mat image = to_bgr8(raw->image, path_);
     if (image.size() != size_) {
       std::ostringstream what;
-      what << "frame " << index << " is " << image.cols << "x" << image.rows
-           << " but the first frame is " << size_.width << "x" << size_.height
-           << " (expected every frame to have the same size)";
+      what << "frame " << index << " is " << image.cols << "x" << image.rows << " but the first frame is "
+           << size_.width << "x" << size_.height << " (expected every frame to have the same size)";
       fail_file(path_, what.str());
     }
     ++stats_.frames_read;
     const double timestamp = timestamps_.next(index, raw->position_ms);
     if (!timestamps_.using_positions() && !reported_rate_fallback_) {
       reported_rate_fallback_ = true;
-      spdlog::debug("{}: decoder positions unusable from frame {}, timestamps at {} fps",
-                    path_.string(), index, fps_);
+      spdlog::debug("{}: decoder positions unusable from frame {}, timestamps at {} fps", path_.string(), index, fps_);
     }
     return Frame{index, timestamp, std::move(image), path_};
   }
 }
 
-std::size_t VideoSource::size_hint() const {
-  return frame_count_ == 0 ? 0 : selected_count(frame_count_, options_);
-}
+std::size_t VideoSource::size_hint() const { return frame_count_ == 0 ? 0 : selected_count(frame_count_, options_); }
 
 std::string VideoSource::description() const {
   std::ostringstream out;

@@ -57,8 +57,8 @@ class VideoSource : public FrameSource {
   double fps_ = 0.0;
   std::size_t frame_count_ = 0;  // from the container; 0 = unknown
   cv::Size size_;
-  std::optional<Raw> first_;     // frame 0, decoded when opening
-  std::size_t next_index_ = 0;   // index of the next raw frame
+  std::optional<Raw> first_;    // frame 0, decoded when opening
+  std::size_t next_index_ = 0;  // index of the next raw frame
   bool ended_ = false;
   VideoTimestamps timestamps_{1.0};  // rate set once the container is open
   bool reported_rate_fallback_ = false;

@@ -20,8 +20,8 @@ Trajectory RelativeTrajectory::online() const {
   return out;
 }
 
-RelativeTrajectory::Recomposed RelativeTrajectory::recompose(const std::vector<KeyFrameSnapshot>& keyframes,
-                                                             const std::map<KeyFrame::Id, CulledKeyFrame>& culled) const {
+RelativeTrajectory::Recomposed RelativeTrajectory::recompose(
+    const std::vector<KeyFrameSnapshot>& keyframes, const std::map<KeyFrame::Id, CulledKeyFrame>& culled) const {
   std::unordered_map<KeyFrame::Id, const SE3d*> T_ref_w;
   for (const KeyFrameSnapshot& kf : keyframes) T_ref_w.emplace(kf.keyframe->id(), &kf.T_c_w);
   Recomposed out;

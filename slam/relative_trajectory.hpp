@@ -45,8 +45,8 @@ class RelativeTrajectory {
   Trajectory online() const;
 
   struct Recomposed {
-    Trajectory trajectory;      // camera-to-world, one pose per frame added, same order as online()
-    std::size_t fallbacks = 0;  // frames whose reference keyframe was not in `keyframes`
+    Trajectory trajectory;              // camera-to-world, one pose per frame added, same order as online()
+    std::size_t fallbacks = 0;          // frames whose reference keyframe was not in `keyframes`
     std::size_t culled_references = 0;  // frames placed through culled keyframes' links
   };
   // Each frame recomposed with its reference keyframe's pose in `keyframes`

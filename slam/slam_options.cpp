@@ -12,8 +12,8 @@ namespace {
 void read_tracker(const ConfigNode& c, TrackerOptions& t) {
   if (const auto fast = c.optional_child("fast_thresholds")) {
     for (int l = 0; l < kPyramidLevels; ++l)
-      t.pyramid.fast[static_cast<std::size_t>(l)].threshold =
-          fast->get_int("level" + std::to_string(l), Range::closed(1, 255), t.pyramid.fast[static_cast<std::size_t>(l)].threshold);
+      t.pyramid.fast[static_cast<std::size_t>(l)].threshold = fast->get_int(
+          "level" + std::to_string(l), Range::closed(1, 255), t.pyramid.fast[static_cast<std::size_t>(l)].threshold);
     fast->finish();
   }
   t.coarse_stage = c.get_bool("coarse_stage", t.coarse_stage);
@@ -22,7 +22,8 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
   t.coarse_radius = c.get_double("coarse_radius_px", Range::positive(500), t.coarse_radius);
   t.fine_max_points = c.get_int("fine_max_points", Range::closed(10, 100000), t.fine_max_points);
   t.fine_radius = c.get_double("fine_radius_px", Range::positive(200), t.fine_radius);
-  t.fine_radius_after_coarse = c.get_double("fine_radius_after_coarse_px", Range::positive(200), t.fine_radius_after_coarse);
+  t.fine_radius_after_coarse =
+      c.get_double("fine_radius_after_coarse_px", Range::positive(200), t.fine_radius_after_coarse);
   t.velocity_decay = c.get_double("velocity_decay", Range::closed(0, 1), t.velocity_decay);
   t.quality_good = c.get_double("quality_good", Range::closed(0, 1), t.quality_good);
   t.quality_lost = c.get_double("quality_lost", Range::closed(0, 1), t.quality_lost);
@@ -52,8 +53,8 @@ void read_tracker(const ConfigNode& c, TrackerOptions& t) {
 void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m) {
   init.min_median_parallax_deg =
       c.get_double("init_min_parallax_deg", Range::positive(45), init.min_median_parallax_deg);
-  m.densify_initial_map_min_parallax_deg = c.get_double("init_densify_min_parallax_deg", Range::non_negative(180),
-                                                         m.densify_initial_map_min_parallax_deg);
+  m.densify_initial_map_min_parallax_deg =
+      c.get_double("init_densify_min_parallax_deg", Range::non_negative(180), m.densify_initial_map_min_parallax_deg);
   init.min_points = c.get_int("init_min_points", Range::closed(8, 100000), init.min_points);
   m.local_ba_selection.neighbours = static_cast<std::size_t>(
       c.get_int("local_ba_neighbours", Range::closed(1, 100), static_cast<int>(m.local_ba_selection.neighbours)));
@@ -67,8 +68,8 @@ void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m
       c.get_double("epipolar_max_zmssd_per_pixel", Range::positive(65025), m.epipolar.max_zmssd_per_pixel));
   m.epipolar_partner.min_baseline =
       c.get_double("epipolar_partner_min_baseline", Range::non_negative(10), m.epipolar_partner.min_baseline);
-  m.epipolar_partner.max_axis_angle_deg = c.get_double("epipolar_partner_max_angle_deg", Range::closed(1, 180),
-                                                       m.epipolar_partner.max_axis_angle_deg);
+  m.epipolar_partner.max_axis_angle_deg =
+      c.get_double("epipolar_partner_max_angle_deg", Range::closed(1, 180), m.epipolar_partner.max_axis_angle_deg);
   m.epipolar.min_parallax_deg =
       c.get_double("epipolar_min_parallax_deg", Range::closed(0, 45), m.epipolar.min_parallax_deg);
   m.epipolar.min_far_depth_factor =
@@ -88,6 +89,7 @@ void read_mapmaker(const ConfigNode& c, TwoViewOptions& init, MapMakerOptions& m
 
 std::vector<std::string> class_names() {
   std::vector<std::string> names;
+  names.reserve(kSemanticClasses.size());
   for (const SemanticClass& c : kSemanticClasses) names.emplace_back(c.name);
   return names;
 }
@@ -156,10 +158,11 @@ SemanticsOptions load_semantics_options(const std::filesystem::path& path, Seman
     region_options.min_density = regions->get_double("min_density", Range::positive(1), region_options.min_density);
     regions->finish();
   }
-  labels.unreliable.min_confidence = labels.moving.min_confidence = static_cast<float>(
-      root.get_double("min_confidence", Range::closed(0, 1), labels.unreliable.min_confidence));
+  labels.unreliable.min_confidence = labels.moving.min_confidence =
+      static_cast<float>(root.get_double("min_confidence", Range::closed(0, 1), labels.unreliable.min_confidence));
   labels.unreliable_weight = root.get_double("unreliable_weight", Range::closed(0, 1), labels.unreliable_weight);
-  labels.min_reliable_points = root.get_int("min_reliable_points", Range::closed(0, 100000), labels.min_reliable_points);
+  labels.min_reliable_points =
+      root.get_int("min_reliable_points", Range::closed(0, 100000), labels.min_reliable_points);
   labels.verify_px = root.get_double("unreliable_verify_px", Range::closed(0, 100), labels.verify_px);
   root.finish();
   return options;
@@ -169,7 +172,8 @@ SlamOptions load_slam_options(const std::filesystem::path& path) {
   SlamOptions options;
   const ConfigNode root = ConfigNode::load_file(path);
   if (const auto tracker = root.optional_child("tracker")) read_tracker(*tracker, options.tracker);
-  if (const auto mapmaker = root.optional_child("mapmaker")) read_mapmaker(*mapmaker, options.initialisation, options.mapmaker);
+  if (const auto mapmaker = root.optional_child("mapmaker"))
+    read_mapmaker(*mapmaker, options.initialisation, options.mapmaker);
   if (const auto reset = root.optional_child("map_reset")) read_reset(*reset, options.reset);
   root.finish();
   return options;

@@ -36,10 +36,11 @@ std::unique_ptr<semantics::SemanticWorker> make_worker(const SemanticsOptions& o
     if (model.classes != semantics::labelmefacade_class_table())
       fail_file(path, "a model for LabelMeFacade's nine classes (the map's class table)");
     if (model.images != ModelImages::unknown && model.images != wanted)
-      fail_file(path, semantics::cat("a model trained on ", semantics::model_images_name(model.images), " images, given as ",
-                          option, ", which labels ", semantics::model_images_name(wanted), " keyframes",
-                          wanted == ModelImages::colour ? " (grey models go to --grey-model)"
-                                                        : " (colour models go to --model)"));
+      fail_file(path,
+                semantics::cat("a model trained on ", semantics::model_images_name(model.images), " images, given as ",
+                               option, ", which labels ", semantics::model_images_name(wanted), " keyframes",
+                               wanted == ModelImages::colour ? " (grey models go to --grey-model)"
+                                                             : " (colour models go to --model)"));
     return model;
   };
   auto worker = std::make_unique<semantics::SemanticWorker>(load(options.model, ModelImages::colour, "the model"),
@@ -65,7 +66,7 @@ SlamOptions with_label_aware_tracking(SlamOptions options) {
 }  // namespace
 
 System::System(Camera camera, SlamOptions options)
-    : camera_(std::move(camera)),
+    : camera_(camera),
       options_(with_label_aware_tracking(std::move(options))),
       worker_(make_worker(options_.semantics, new_points_, map_)),
       map_maker_(camera_, map_, queue_, options_.mapmaker, worker_ ? &new_points_ : nullptr),
@@ -132,7 +133,7 @@ FrameReport System::process(Frame frame) {
     report.tracking = tracker_.track(frame);
     report.has_pose = report.tracking.tracked;
     report.T_c_w = report.tracking.T_c_w;
-    report.status = !report.tracking.tracked     ? FrameStatus::lost
+    report.status = !report.tracking.tracked      ? FrameStatus::lost
                     : report.tracking.relocalised ? FrameStatus::relocalised
                                                   : FrameStatus::tracking;
     // Before the map maker's turn in --sync: the keyframe poses are then the
@@ -220,7 +221,8 @@ void System::record_pose(const FrameReport& report) {
 }
 
 Trajectory System::final_trajectory() const {
-  const RelativeTrajectory::Recomposed final = trajectory_.recompose(map_.snapshot_keyframes(), map_.culled_keyframes());
+  const RelativeTrajectory::Recomposed final =
+      trajectory_.recompose(map_.snapshot_keyframes(), map_.culled_keyframes());
   if (final.fallbacks)
     spdlog::warn("final trajectory: {} of {} frames kept their tracked pose (reference keyframe no longer in the map)",
                  final.fallbacks, trajectory_.size());

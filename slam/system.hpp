@@ -114,7 +114,7 @@ class System {
   Initialiser initialiser_;
   bool initialised_ = false;
   std::size_t initialised_at_ = 0;  // the frame the map was initialised on
-  bool map_loaded_ = false;  // a loaded map is relocalised against, never reset
+  bool map_loaded_ = false;         // a loaded map is relocalised against, never reset
   std::size_t map_resets_ = 0;
   std::vector<TrajectorySegment> earlier_segments_;
   // Keyframe candidates the tracker has asked for (the map maker's count of

@@ -58,7 +58,7 @@ DescriptorRelocaliser::DescriptorRelocaliser(Camera camera, DescriptorRelocalise
                            kOrbPatch)) {}
 
 const DescriptorRelocaliser::KeyFrameDescriptors& DescriptorRelocaliser::descriptors_of(const KeyFrame& keyframe,
-                                                                                       const Map& map) {
+                                                                                        const Map& map) {
   KeyFrameDescriptors& entry = cache_[keyframe.id()];
   // The measurements are copied only when the descriptors are (re)computed.
   const std::size_t count = map.read([&](const MapView&) { return keyframe.measurements().size(); });
@@ -150,8 +150,7 @@ std::optional<DescriptorRelocalisation> DescriptorRelocaliser::relocalise(
     std::vector<int> inliers;
     const double error = options_.ransac_error_px / camera_.fx();
     if (!cv::solvePnPRansac(object, image, cv::Mat::eye(3, 3, CV_64F), cv::noArray(), rvec, tvec, false,
-                            options_.ransac_iterations, static_cast<float>(error), 0.99, inliers,
-                            cv::SOLVEPNP_EPNP))
+                            options_.ransac_iterations, static_cast<float>(error), 0.99, inliers, cv::SOLVEPNP_EPNP))
       continue;
     if (static_cast<int>(inliers.size()) < options_.min_inliers) continue;
     if (best && static_cast<int>(inliers.size()) <= best->inliers) continue;
@@ -169,8 +168,8 @@ std::optional<DescriptorRelocalisation> DescriptorRelocaliser::relocalise(
     cv::cv2eigen(R_cv, R);
     cv::cv2eigen(tvec, t);
     if (!R.allFinite() || !t.allFinite()) continue;
-    best = DescriptorRelocalisation{keyframes[k].keyframe, SE3d(R, t),
-                                    static_cast<int>(object.size()), static_cast<int>(inliers.size())};
+    best = DescriptorRelocalisation{keyframes[k].keyframe, SE3d(R, t), static_cast<int>(object.size()),
+                                    static_cast<int>(inliers.size())};
   }
   return best;
 }

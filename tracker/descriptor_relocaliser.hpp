@@ -30,12 +30,12 @@ namespace facadeslam {
 
 struct DescriptorRelocaliserOptions {
   bool enabled = true;
-  int frame_features = 1500;      // ORB features detected in the current frame
-  int max_keyframes = 4;          // keyframes tried, most similar small blurry image first
-  float ratio = 0.8f;             // Lowe's ratio test on Hamming distances
-  int max_hamming = 64;           // of 256 bits
-  int min_inliers = 20;           // PnP inliers for a pose worth tracking from
-  double ransac_error_px = 4.0;   // level-0 pixels
+  int frame_features = 1500;     // ORB features detected in the current frame
+  int max_keyframes = 4;         // keyframes tried, most similar small blurry image first
+  float ratio = 0.8f;            // Lowe's ratio test on Hamming distances
+  int max_hamming = 64;          // of 256 bits
+  int min_inliers = 20;          // PnP inliers for a pose worth tracking from
+  double ransac_error_px = 4.0;  // level-0 pixels
   int ransac_iterations = 300;
 };
 
@@ -59,7 +59,7 @@ class DescriptorRelocaliser {
 
  private:
   struct KeyFrameDescriptors {
-    std::size_t measurements = 0;     // how many the keyframe had when computed
+    std::size_t measurements = 0;      // how many the keyframe had when computed
     std::vector<MapPoint::Id> points;  // one per descriptor row
     cv::Mat descriptors;               // CV_8U, 32 bytes per row
   };

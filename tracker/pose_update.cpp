@@ -139,8 +139,8 @@ Eigen::Matrix<double, 2, 6> pose_measurement_jacobian(const SE3d& T_c_w, const E
   return camera.project_jacobian(p_c) * SE3d::left_update_point_jacobian_at(p_c);
 }
 
-PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement> measurements,
-                             const Camera& camera, const PoseUpdateOptions& options) {
+PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement> measurements, const Camera& camera,
+                             const PoseUpdateOptions& options) {
   for (const PoseMeasurement& m : measurements)
     if (!(m.weight >= 0.0 && m.weight <= 1.0))
       throw Error("update_pose: a measurement's weight is " + std::to_string(m.weight) + ", expected 0..1");

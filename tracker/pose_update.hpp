@@ -37,28 +37,28 @@ struct PoseMeasurement {
 };
 
 struct PoseUpdateOptions {
-  int max_iterations = 10;          // PTAM: 10 per stage
-  double convergence = 1e-6;        // stop when |delta| falls below this
-  double min_sigma_squared = 0.4;   // floor of the robust scale, level-pixels^2
-  double tukey_c = kTukeyC;         // cut at c * sigma
+  int max_iterations = 10;         // PTAM: 10 per stage
+  double convergence = 1e-6;       // stop when |delta| falls below this
+  double min_sigma_squared = 0.4;  // floor of the robust scale, level-pixels^2
+  double tukey_c = kTukeyC;        // cut at c * sigma
   double median_to_sigma_squared = kMedianToSigmaSquared2d;
-  double min_depth = 1e-6;          // points closer than this (or behind) are ignored
+  double min_depth = 1e-6;  // points closer than this (or behind) are ignored
 };
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 struct PoseUpdateResult {
   SE3d T_c_w;
-  std::vector<double> weights;          // Tukey weight per measurement (0 = outlier / behind camera)
-  std::vector<std::uint8_t> inliers;    // weight > 0
+  std::vector<double> weights;        // Tukey weight per measurement (0 = outlier / behind camera)
+  std::vector<std::uint8_t> inliers;  // weight > 0
   int num_inliers = 0;
-  double inlier_rms_px = 0.0;           // RMS level-0 reprojection error of the inliers
-  double sigma_squared = 0.0;           // robust scale at the final pose, level-pixels^2
+  double inlier_rms_px = 0.0;  // RMS level-0 reprojection error of the inliers
+  double sigma_squared = 0.0;  // robust scale at the final pose, level-pixels^2
   Matrix6d information = Matrix6d::Zero();
   Matrix6d covariance = Matrix6d::Zero();  // zero when the information is singular
-  int iterations = 0;                   // Gauss-Newton steps taken
-  bool converged = false;               // |delta| < convergence was reached
-  bool ok = false;                      // false: too few usable measurements, pose unchanged
+  int iterations = 0;                      // Gauss-Newton steps taken
+  bool converged = false;                  // |delta| < convergence was reached
+  bool ok = false;                         // false: too few usable measurements, pose unchanged
 };
 
 // d pi(exp(delta) T_c_w p_w) / d delta at delta = 0, in level-0 pixels.
@@ -66,7 +66,7 @@ Eigen::Matrix<double, 2, 6> pose_measurement_jacobian(const SE3d& T_c_w, const E
                                                       const Camera& camera);
 
 // Throws Error when a measurement's level is outside 0..3.
-PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement> measurements,
-                             const Camera& camera, const PoseUpdateOptions& options = {});
+PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement> measurements, const Camera& camera,
+                             const PoseUpdateOptions& options = {});
 
 }  // namespace facadeslam

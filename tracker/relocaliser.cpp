@@ -27,7 +27,8 @@ SO3d rotation_from_sbi_motion(const Se2Motion& motion, const Camera& camera, cv:
     for (int gx = 0; gx < 3; ++gx) {
       const Eigen::Vector2d x_cur((0.2 + 0.3 * gx) * (camera.width() - 1), (0.2 + 0.3 * gy) * (camera.height() - 1));
       const Eigen::Vector2d d = level0_to_sbi(x_cur) - c;
-      const Eigen::Vector2d w(ct * d.x() - st * d.y() + c.x() + motion.t.x(), st * d.x() + ct * d.y() + c.y() + motion.t.y());
+      const Eigen::Vector2d w(ct * d.x() - st * d.y() + c.x() + motion.t.x(),
+                              st * d.x() + ct * d.y() + c.y() + motion.t.y());
       rays_kf.push_back(camera.unproject(sbi_to_level0(w)));
       pixels_cur.push_back(x_cur);
     }
@@ -57,9 +58,9 @@ std::vector<KeyFrameSnapshot> keyframes_by_similarity(const cv::Mat& current_sbi
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t i = 0; i < keyframes.size(); ++i) {
     const cv::Mat& sbi = keyframes[i].keyframe->small_blurred();
-    order.emplace_back(sbi.size() == current_sbi.size() ? sbi_difference(sbi, current_sbi)
-                                                         : std::numeric_limits<double>::infinity(),
-                       i);
+    order.emplace_back(
+        sbi.size() == current_sbi.size() ? sbi_difference(sbi, current_sbi) : std::numeric_limits<double>::infinity(),
+        i);
   }
   std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<KeyFrameSnapshot> out;
@@ -68,9 +69,10 @@ std::vector<KeyFrameSnapshot> keyframes_by_similarity(const cv::Mat& current_sbi
   return out;
 }
 
-std::optional<RelocalisationCandidate> find_relocalisation_candidate(
-    const cv::Mat& current_sbi, const std::vector<KeyFrameSnapshot>& keyframes, const Camera& camera,
-    const RelocaliserOptions& options) {
+std::optional<RelocalisationCandidate> find_relocalisation_candidate(const cv::Mat& current_sbi,
+                                                                     const std::vector<KeyFrameSnapshot>& keyframes,
+                                                                     const Camera& camera,
+                                                                     const RelocaliserOptions& options) {
   double best = std::numeric_limits<double>::infinity();
   std::size_t best_index = 0;
   for (std::size_t i = 0; i < keyframes.size(); ++i) {

@@ -29,13 +29,15 @@ struct RelocaliserOptions {
 };
 
 // `keyframes`: the map's keyframes with their poses (Map::snapshot_keyframes).
-std::optional<RelocalisationCandidate> find_relocalisation_candidate(
-    const cv::Mat& current_sbi, const std::vector<KeyFrameSnapshot>& keyframes, const Camera& camera,
-    const RelocaliserOptions& options = {});
+std::optional<RelocalisationCandidate> find_relocalisation_candidate(const cv::Mat& current_sbi,
+                                                                     const std::vector<KeyFrameSnapshot>& keyframes,
+                                                                     const Camera& camera,
+                                                                     const RelocaliserOptions& options = {});
 
 // The keyframes ordered by the similarity of their small blurry images to
 // `current_sbi`, most similar first (those of another size last).
-std::vector<KeyFrameSnapshot> keyframes_by_similarity(const cv::Mat& current_sbi, std::vector<KeyFrameSnapshot> keyframes);
+std::vector<KeyFrameSnapshot> keyframes_by_similarity(const cv::Mat& current_sbi,
+                                                      std::vector<KeyFrameSnapshot> keyframes);
 
 // The camera rotation R (current from keyframe) that best explains an SE2
 // motion of the SBI, found by Gauss-Newton over sample pixels through the

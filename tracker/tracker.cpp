@@ -39,17 +39,17 @@ constexpr double kProjectionBorder = 4.0;
 }  // namespace
 
 struct Tracker::Candidate {
-  std::size_t point;            // index into the snapshot
-  Eigen::Vector2d pixel;        // predicted level-0 position
-  Eigen::Matrix2d warp;         // source-level pixel -> current level-0 pixels
+  std::size_t point;      // index into the snapshot
+  Eigen::Vector2d pixel;  // predicted level-0 position
+  Eigen::Matrix2d warp;   // source-level pixel -> current level-0 pixels
   int search_level;
 };
 
 Tracker::Tracker(Camera camera, const Map& map, KeyFrameQueue& keyframes, TrackerOptions options)
-    : camera_(std::move(camera)),
+    : camera_(camera),
       map_(map),
       keyframes_(keyframes),
-      options_(std::move(options)),
+      options_(options),
       descriptor_relocaliser_(camera_, options_.descriptor_relocaliser) {}
 
 void Tracker::start(const SE3d& T_c_w, std::size_t frame_index, const Eigen::Matrix<double, 6, 1>& velocity) {
@@ -71,9 +71,8 @@ void Tracker::reset() {
   descriptor_relocaliser_.clear();
 }
 
-std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points,
-                                                     const SE3d& T_c_w, int* dropped,
-                                                     SearchCounts* counts) const {
+std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnapshot>& points, const SE3d& T_c_w,
+                                                     int* dropped, SearchCounts* counts) const {
   std::vector<Candidate> out, left_out;
   out.reserve(points.size());
   const Eigen::Matrix3d R_c_w = T_c_w.rotation_matrix();
@@ -109,10 +108,11 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
 
 std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>& points,
                                                 const std::vector<Candidate>& candidates,
-                                                const patch::SearchImage& image, double radius_level0,
-                                                int max_points, int& searched, SearchCounts* counts) const {
+                                                const patch::SearchImage& image, double radius_level0, int max_points,
+                                                int& searched, SearchCounts* counts) const {
   std::vector<TrackedMeasurement> found;
-  found.reserve(static_cast<std::size_t>(std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(max_points))));
+  found.reserve(
+      static_cast<std::size_t>(std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(max_points))));
   searched = 0;
   for (const auto& c : candidates) {
     if (searched >= max_points) break;
@@ -262,8 +262,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
   result.fine_counts.outliers = static_cast<int>(found.size() - inliers.size());
   result.T_c_w = T_c_w;
 
-  const double ratio =
-      result.fine_searched > 0 ? static_cast<double>(result.fine_found) / result.fine_searched : 0.0;
+  const double ratio = result.fine_searched > 0 ? static_cast<double>(result.fine_found) / result.fine_searched : 0.0;
   const bool close = result.inlier_rms_px <= options_.max_good_rms_px;
   if (close && (result.fine_found >= options_.good_found ||
                 (result.fine_found >= options_.min_found && ratio >= options_.quality_good)))
@@ -295,7 +294,8 @@ std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> Tracke
     return std::optional{std::move(found)};
   };
   if (const auto candidate = find_relocalisation_candidate(sbi, keyframes, camera_, options_.relocaliser))
-    if (auto found = attempt(candidate->T_c_w)) return done(std::move(*found), "small blurry image", candidate->keyframe->id());
+    if (auto found = attempt(candidate->T_c_w))
+      return done(std::move(*found), "small blurry image", candidate->keyframe->id());
   if (!options_.descriptor_relocaliser.enabled || keyframes.empty()) return std::nullopt;
   // The keyframes most like the frame, and the newest (where tracking was
   // lost, if it was lost just now) in any case.
@@ -435,7 +435,8 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
   // as soon as the points found fall below a share of those found when the
   // last keyframe was made, even on dodgy tracking, which is what comes
   // next otherwise; but not on a revisit (tracker_options.hpp).
-  if (result.quality != TrackingQuality::bad && frames >= static_cast<std::size_t>(options_.keyframe_min_frames_overlap) &&
+  if (result.quality != TrackingQuality::bad &&
+      frames >= static_cast<std::size_t>(options_.keyframe_min_frames_overlap) &&
       result.fine_found < options_.keyframe_min_overlap * found_at_keyframe_) {
     const auto covers = [&](const KeyFrameSnapshot& kf) {
       return near_by(kf, options_.keyframe_min_distance) && looks_the_same_way(kf);
@@ -462,14 +463,15 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
     near = true;
     if (looks_the_same_way(kf)) return KeyFrameReason::none;
   }
-  if (near) return frames >= static_cast<std::size_t>(options_.keyframe_min_frames_turning) ? KeyFrameReason::turned
-                                                                                            : KeyFrameReason::none;
+  if (near)
+    return frames >= static_cast<std::size_t>(options_.keyframe_min_frames_turning) ? KeyFrameReason::turned
+                                                                                    : KeyFrameReason::none;
   return frames >= static_cast<std::size_t>(options_.keyframe_min_frames) ? KeyFrameReason::moved
                                                                           : KeyFrameReason::none;
 }
 
-void Tracker::request_keyframe(const Frame& frame, const SE3d& T_c_w,
-                               std::vector<TrackedMeasurement> measurements, KeyFrameReason reason) {
+void Tracker::request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vector<TrackedMeasurement> measurements,
+                               KeyFrameReason reason) {
   KeyFrameCandidate candidate;
   candidate.frame = frame;  // shares the images
   candidate.T_c_w = T_c_w;

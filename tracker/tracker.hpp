@@ -45,13 +45,13 @@ struct SearchCounts {
 };
 
 struct TrackingResult {
-  bool tracked = false;        // pose is valid for this frame
+  bool tracked = false;  // pose is valid for this frame
   TrackingQuality quality = TrackingQuality::bad;
   SE3d T_c_w;
-  bool relocalised = false;    // tracking resumed on this frame after a loss
+  bool relocalised = false;  // tracking resumed on this frame after a loss
   bool keyframe_requested = false;
   int coarse_searched = 0, coarse_found = 0;
-  bool coarse_pose_used = false;  // the fine stage started from the coarse stage's pose
+  bool coarse_pose_used = false;      // the fine stage started from the coarse stage's pose
   bool coarse_pose_rejected = false;  // ... which failed where the motion model's prediction did better
   int fine_searched = 0, fine_found = 0;
   int points_dropped = 0;        // projecting into the image, but of weight 0 (moving class): not searched
@@ -108,9 +108,9 @@ class Tracker {
   // search image and returns the measurements found; `searched` counts the
   // attempts, `counts` (optional) why the others failed.
   std::vector<TrackedMeasurement> search(const std::vector<PointSnapshot>& points,
-                                         const std::vector<Candidate>& candidates,
-                                         const patch::SearchImage& image, double radius_level0, int max_points,
-                                         int& searched, SearchCounts* counts) const;
+                                         const std::vector<Candidate>& candidates, const patch::SearchImage& image,
+                                         double radius_level0, int max_points, int& searched,
+                                         SearchCounts* counts) const;
   // The coarse (unless `coarse` is false) + fine stages and pose updates
   // from `T_start`; fills `result`.
   std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,

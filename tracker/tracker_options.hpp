@@ -29,16 +29,16 @@ struct TrackerOptions {
   // Coarse stage: a few points found at the coarse levels, searched over a
   // wide radius, to survive fast motion. Radii are in level-0 pixels.
   bool coarse_stage = true;
-  int coarse_min_level = 2;       // points searched at this level or above
+  int coarse_min_level = 2;  // points searched at this level or above
   int coarse_max_points = 60;
-  int coarse_min_found = 10;      // below this the coarse pose is not used
+  int coarse_min_found = 10;  // below this the coarse pose is not used
   double coarse_radius = 30.0;
   // When the fine stage fails from the coarse stage's pose, run it again
   // from the motion model's prediction and keep the better (Tracker::track).
   bool retry_from_prediction = true;
   // Fine stage: up to this many points over all levels, tight radius.
   int fine_max_points = 1000;
-  double fine_radius = 8.0;       // without a coarse stage
+  double fine_radius = 8.0;  // without a coarse stage
   double fine_radius_after_coarse = 5.0;
 
   // Motion model: constant velocity, decayed (PTAM).
@@ -47,7 +47,7 @@ struct TrackerOptions {
   // Tracking quality = found / searched in the fine stage.
   double quality_good = 0.3;
   double quality_lost = 0.13;
-  int min_found = 20;             // fewer points found is a failure whatever the ratio
+  int min_found = 20;  // fewer points found is a failure whatever the ratio
   // This many inliers is good tracking whatever the ratio: around a 3D
   // object (templeRing) half of the projected points are occluded or seen
   // from too far round, so the ratio stays low while hundreds of points
@@ -78,11 +78,11 @@ struct TrackerOptions {
   // the last keyframe's view and tracking is lost once the camera has turned
   // past it.
   int keyframe_min_frames = 20;
-  double keyframe_min_distance = 0.12;  // x the nearest keyframe's mean scene depth
-  double keyframe_min_angle_deg = 15.0; // between optical axes
-  int keyframe_min_frames_turning = 10; // turning is fast: the view leaves the map in a second
+  double keyframe_min_distance = 0.12;         // x the nearest keyframe's mean scene depth
+  double keyframe_min_angle_deg = 15.0;        // between optical axes
+  int keyframe_min_frames_turning = 10;        // turning is fast: the view leaves the map in a second
   double keyframe_distance_after_turn = 0.25;  // x keyframe_min_distance for the first keyframe after a turn
-  std::size_t keyframe_max_queue = 3;   // map maker busy: wait
+  std::size_t keyframe_max_queue = 3;          // map maker busy: wait
   // ... and, whatever the distance, when the points found fall below this
   // share of the most found in a frame since the last keyframe (the view
   // leaves the map: forward motion at 10 Hz), at most every this many frames.

@@ -11,7 +11,8 @@ namespace fs = std::filesystem;
 
 fs::path find_ground_truth_labels(const fs::path& sequence, const fs::path& given) {
   if (!given.empty()) {
-    if (!is_existing_folder(given)) fail_file(given, "--gt-labels expects a folder of label PNGs named like the frames");
+    if (!is_existing_folder(given))
+      fail_file(given, "--gt-labels expects a folder of label PNGs named like the frames");
     return given;
   }
   const fs::path folder = is_existing_folder(sequence) ? sequence : sequence.parent_path();
@@ -56,7 +57,8 @@ void GroundTruthLabelFiles::require_files_for(const std::vector<fs::path>& frame
     const fs::path label = label_file_for(folder_, frame.filename());
     if (!is_readable_file(label))
       fail_file(label, "the ground-truth label image of frame " + frame.filename().string() + " " +
-                           describe_path(label) + " (--gt-labels: a label PNG named like each frame, or its name with .png)");
+                           describe_path(label) +
+                           " (--gt-labels: a label PNG named like each frame, or its name with .png)");
   }
 }
 
@@ -67,7 +69,8 @@ cv::Mat GroundTruthLabelFiles::class_ids(std::size_t frame_index) const {
   const cv::Mat colours = semantics::read_label_image(path);
   if (colours.size() != frame_size_)
     fail_file(path, "label image is " + std::to_string(colours.cols) + "x" + std::to_string(colours.rows) +
-                        ", the frame is " + std::to_string(frame_size_.width) + "x" + std::to_string(frame_size_.height));
+                        ", the frame is " + std::to_string(frame_size_.width) + "x" +
+                        std::to_string(frame_size_.height));
   return synth::label_ids_from_colours(colours, path);
 }
 

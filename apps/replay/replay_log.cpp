@@ -30,8 +30,8 @@ void ReplayLog::add(const FrameReport& r, bool initialised) {
   } else if (initialised) {
     ++lost;
   }
-  after_initialisation += r.status == FrameStatus::tracking || r.status == FrameStatus::relocalised ||
-                          r.status == FrameStatus::lost;
+  after_initialisation +=
+      r.status == FrameStatus::tracking || r.status == FrameStatus::relocalised || r.status == FrameStatus::lost;
   tracked_after_initialisation += r.status == FrameStatus::tracking;
   points_dropped += static_cast<std::size_t>(r.tracking.points_dropped);
   points_down_weighted += static_cast<std::size_t>(r.tracking.points_down_weighted);

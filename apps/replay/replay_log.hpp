@@ -11,11 +11,11 @@ namespace facadeslam::apps {
 
 // Resources at one moment of a run: the soak's memory and time curves.
 struct ResourceSample {
-  std::size_t frames = 0;           // frames processed so far
-  double resident_mib = 0.0;        // the process's resident memory (0 where unknown)
+  std::size_t frames = 0;     // frames processed so far
+  double resident_mib = 0.0;  // the process's resident memory (0 where unknown)
   std::size_t keyframes = 0, points = 0;
-  double frame_ms_median = 0.0;     // over the frames since the previous sample
-  double tracker_ms_median = 0.0;   // ... of those tracked (0 if none)
+  double frame_ms_median = 0.0;    // over the frames since the previous sample
+  double tracker_ms_median = 0.0;  // ... of those tracked (0 if none)
 };
 
 struct ReplayLog {

@@ -82,9 +82,8 @@ Json semantics_summary(const ReplayRunInfo& info, const ReplayLog& log, const Sy
   out["observations_labelled"] = stats->observations_labelled;
   // Keyframes whose image was grey: the grey model labels them, if given.
   out["grey_keyframes"] = stats->grey_keyframes;
-  out["worker_us_per_point"] = stats->observations_labelled
-                                   ? 1000.0 * total_ms / static_cast<double>(stats->observations_labelled)
-                                   : 0.0;
+  out["worker_us_per_point"] =
+      stats->observations_labelled ? 1000.0 * total_ms / static_cast<double>(stats->observations_labelled) : 0.0;
   return out;
 }
 
@@ -155,7 +154,7 @@ Json mapping_summary(const MapMakerStats& stats) {
 }  // namespace
 
 ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
-                          const System& system, const ReadStats& read_stats) {
+                                   const System& system, const ReadStats& read_stats) {
   std::filesystem::create_directories(paths.out);
   // trajectory.txt from the final map (each frame recomposed on its
   // reference keyframe after the last bundle adjustment); the poses as
@@ -184,9 +183,9 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
   report["relocalisations"] = log.relocalisations;
   report["frames_after_initialisation"] = log.after_initialisation;
   report["tracked_share_after_initialisation"] =
-      log.after_initialisation ? static_cast<double>(log.tracked_after_initialisation) /
-                                     static_cast<double>(log.after_initialisation)
-                               : 0.0;
+      log.after_initialisation
+          ? static_cast<double>(log.tracked_after_initialisation) / static_cast<double>(log.after_initialisation)
+          : 0.0;
   // Maps given up (lost early or for long) and the tracked poses dropped
   // with them: the trajectories hold the last map's frames only.
   report["map_resets"] = system.map_resets();
@@ -216,9 +215,8 @@ ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayR
     report["ate_online"] = ate_online;
   }
   if (!system.earlier_segments().empty()) {
-    const Trajectory gt = info.ground_truth.empty()
-                              ? Trajectory{}
-                              : repeat_trajectory(info.ground_truth, read_stats.pass_time_offsets_s);
+    const Trajectory gt =
+        info.ground_truth.empty() ? Trajectory{} : repeat_trajectory(info.ground_truth, read_stats.pass_time_offsets_s);
     report["trajectory_segments"] = write_trajectory_segments(paths.out / "segments", system, gt);
   }
   write_json(paths.out / "report.json", report);

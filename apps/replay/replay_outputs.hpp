@@ -19,14 +19,14 @@
 namespace facadeslam::apps {
 
 struct ReplayOutputPaths {
-  std::filesystem::path out;        // output folder
-  std::filesystem::path map_file;   // where the map goes
+  std::filesystem::path out;       // output folder
+  std::filesystem::path map_file;  // where the map goes
 };
 
 struct ReplayRunInfo {
   std::filesystem::path sequence, camera_file;
   bool synchronous = false;
-  std::filesystem::path model;  // empty: semantics off
+  std::filesystem::path model;       // empty: semantics off
   std::filesystem::path grey_model;  // empty: none (grey keyframes stay unlabelled)
   // Against ground-truth label images, when the sequence has them.
   std::optional<semantics::MapLabelAccuracy> label_accuracy;
@@ -44,6 +44,6 @@ struct ReplayOutputs {
 
 // Writes the files.
 ReplayOutputs write_replay_outputs(const ReplayOutputPaths& paths, const ReplayRunInfo& info, const ReplayLog& log,
-                          const System& system, const ReadStats& read_stats);
+                                   const System& system, const ReadStats& read_stats);
 
 }  // namespace facadeslam::apps

@@ -15,8 +15,7 @@ void check_replay_paths(const ReplayPaths& p) {
   if (is_existing_folder(p.sequence)) {
     plan.input(p.sequence / "rgb.txt", "SEQUENCE's rgb.txt");
     plan.input_folder_read_whole(p.sequence, "SEQUENCE");
-  }
-  else
+  } else
     plan.input(p.sequence, "SEQUENCE");
   plan.input(p.camera, "--camera");
   plan.input(p.config, "--config");

@@ -158,9 +158,9 @@ struct ReplayRender::Impl {
     Eigen::Isometry3d follow = T_w_c ? *T_w_c : Eigen::Isometry3d::Identity();
     if (!T_w_c) follow = keyframes.back().T_c_w.inverse().isometry();
     const double depth = median(depths);
-    const render::MapViewCamera view = render::ar::follow_camera(
-        follow, render::view_axes_from_cameras(content.keyframes_T_c_w), depth, map_view_size.width,
-        map_view_size.height);
+    const render::MapViewCamera view =
+        render::ar::follow_camera(follow, render::view_axes_from_cameras(content.keyframes_T_c_w), depth,
+                                  map_view_size.width, map_view_size.height);
     style.point_size = std::max(2.f, std::round(3.f * map_view_size.height / 480.f));
     style.frustum_depth = 0.12 * depth;
     style.trajectory_line_width = 2.f;
@@ -234,8 +234,8 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
   const bool overlay = stats.object_drawn || stats.points_drawn > 0;
   if (!overlay) ++m.without_overlay;
   const std::string status = std::string(to_string(report.status)) + (T_w_c ? "" : " (no overlay)");
-  const std::string caption = "frame " + std::to_string(frame_number) + "  " + status + "  " +
-                              std::to_string(stats.points_drawn) + " points";
+  const std::string caption =
+      "frame " + std::to_string(frame_number) + "  " + status + "  " + std::to_string(stats.points_drawn) + " points";
   cv::putText(ar, caption, {8, ar.rows - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar::all(0), 3, cv::LINE_AA);
   cv::putText(ar, caption, {8, ar.rows - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar::all(255), 1, cv::LINE_AA);
 

@@ -49,8 +49,7 @@ class ReplayRender {
   // tracked frame extends the trajectory.
   bool wants(std::size_t frame_number) const { return frame_number % options_.every == 0; }
   void before_tracking(std::size_t frame_number, const System& system);
-  void after_tracking(std::size_t frame_number, const FrameReport& report, const cv::Mat& image,
-                      const System& system);
+  void after_tracking(std::size_t frame_number, const FrameReport& report, const cv::Mat& image, const System& system);
 
   // Closes the video, writes the contact sheet; the report's "render" object.
   Json finish(double replay_fps);

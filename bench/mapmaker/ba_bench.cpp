@@ -77,8 +77,8 @@ const BaProblem& local_problem(int neighbours = 4, int points = 2700) {
     std::vector<ObservationRef> refs;
     for (const BaObservation& obs : full.observations)
       refs.push_back({full.keyframes[obs.keyframe].id, full.points[obs.point].id});
-    const BaSelection selection =
-        local_ba_selection(centres, refs, full.keyframes.back().id, LocalBaOptions{static_cast<std::size_t>(neighbours)});
+    const BaSelection selection = local_ba_selection(centres, refs, full.keyframes.back().id,
+                                                     LocalBaOptions{static_cast<std::size_t>(neighbours)});
 
     BaProblem local;
     std::map<std::size_t, std::size_t> keyframe_index, point_index;  // full -> local

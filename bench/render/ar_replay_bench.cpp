@@ -56,9 +56,9 @@ class AugmentedViewDrawer {
     for (const Eigen::Vector3d& p : points_w) map.points_w.push_back(p.cast<float>());
     map.colours_bgr.assign(map.points_w.size(), cv::Vec3b(0, 0, 128));
     map.keyframes_T_c_w = keyframes_T_c_w;
-    const render::MapViewCamera camera = render::ar::follow_camera(
-        *content.T_w_c, render::view_axes_from_cameras(keyframes_T_c_w), keyframes.front().mean_depth,
-        height_ * 4 / 3, height_);
+    const render::MapViewCamera camera =
+        render::ar::follow_camera(*content.T_w_c, render::view_axes_from_cameras(keyframes_T_c_w),
+                                  keyframes.front().mean_depth, height_ * 4 / 3, height_);
     benchmark::DoNotOptimize(map_view_.render(map, camera).data);
   }
 

@@ -62,7 +62,14 @@ void BM_RenderColourLabelDepth(benchmark::State& state) {
   }
   frames_per_second(state);
 }
-BENCHMARK(BM_RenderColourLabelDepth)->ArgName("anisotropy")->Arg(1)->Arg(2)->Arg(4)->Arg(16)->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderColourLabelDepth)
+    ->ArgName("anisotropy")
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(16)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kMillisecond);
 
 void BM_SynthFrame(benchmark::State& state) {
   const synth::SceneSpec& spec = demo_scene();
@@ -96,12 +103,25 @@ BENCHMARK(BM_EncodeFramePngs)->MeasureProcessCPUTime()->Unit(benchmark::kMillise
 
 // The demo camera at `width` x `height` (range 0, 1), with the lens
 // distortion of a typical phone (range 2 = 1) or none.
+// The demo's and KITTI's image sizes, each with and without lens distortion.
+void at_both_sizes_plain_and_distorted(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"width", "height", "distorted"});
+  for (const int distorted : {0, 1}) b->Args({640, 480, distorted})->Args({1226, 370, distorted});
+  b->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+}
+
 Camera bench_camera(const benchmark::State& state) {
   const Camera base = demo_scene().camera.resized(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   if (state.range(2) == 0) return base;
   return Camera(base.width(), base.height(),
-                PinholeRadTan{.fx = base.fx(), .fy = base.fy(), .cx = base.cx(), .cy = base.cy(), .k1 = -0.12,
-                              .k2 = 0.03, .p1 = 0.0005, .p2 = -0.0004});
+                PinholeRadTan{.fx = base.fx(),
+                              .fy = base.fy(),
+                              .cx = base.cx(),
+                              .cy = base.cy(),
+                              .k1 = -0.12,
+                              .k2 = 0.03,
+                              .p1 = 0.0005,
+                              .p2 = -0.0004});
 }
 
 // The street at the AR view's sizes: the peer of the overlay.
@@ -118,10 +138,7 @@ void BM_RenderStreetAtSize(benchmark::State& state) {
   }
   frames_per_second(state);
 }
-BENCHMARK(BM_RenderStreetAtSize)
-    ->ArgNames({"width", "height", "distorted"})
-    ->Args({640, 480, 0})->Args({1226, 370, 0})->Args({640, 480, 1})->Args({1226, 370, 1})
-    ->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderStreetAtSize)->Apply(at_both_sizes_plain_and_distorted);
 
 // A frame of the street with ~300 "measured" points on its surfaces (from
 // the depth image) and the object standing on the road ahead.
@@ -172,10 +189,7 @@ void BM_ArOverlay(benchmark::State& state) {
   }
   frames_per_second(state);
 }
-BENCHMARK(BM_ArOverlay)
-    ->ArgNames({"width", "height", "distorted"})
-    ->Args({640, 480, 0})->Args({1226, 370, 0})->Args({640, 480, 1})->Args({1226, 370, 1})
-    ->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ArOverlay)->Apply(at_both_sizes_plain_and_distorted);
 
 // The overlay and the map view beside it (what `replay --render` draws per
 // frame, before PNG and video encoding).
@@ -200,8 +214,10 @@ void BM_ArOverlayWithMapView(benchmark::State& state) {
 }
 BENCHMARK(BM_ArOverlayWithMapView)
     ->ArgNames({"width", "height", "distorted"})
-    ->Args({640, 480, 0})->Args({1226, 370, 0})
-    ->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+    ->Args({640, 480, 0})
+    ->Args({1226, 370, 0})
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kMillisecond);
 
 // What the writer thread of `replay --render` spends per 1280x480 frame
 // (the overlay beside a map view): the PNG at zlib level 1, and the video
@@ -225,7 +241,12 @@ void BM_EncodeArFramePng(benchmark::State& state) {
   state.counters["bytes"] = static_cast<double>(buffer.size());
   frames_per_second(state);
 }
-BENCHMARK(BM_EncodeArFramePng)->ArgName("zlib_level")->Arg(1)->Arg(9)->MeasureProcessCPUTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EncodeArFramePng)
+    ->ArgName("zlib_level")
+    ->Arg(1)
+    ->Arg(9)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kMillisecond);
 
 void BM_EncodeArFrameVideo(benchmark::State& state) {
   const cv::Mat frame = composed_frame();

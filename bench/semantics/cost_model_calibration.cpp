@@ -300,11 +300,12 @@ void print_model(const CostModel& m) {
               m.gevers_c_plane, m.geusebroek_plane);
   std::printf("  position: %.4f\n  statistics_plane: %.4f\n  moments: %s\n", m.position, m.statistics_plane,
               list(m.moments.data(), 4).c_str());
-  std::printf("  hu: %.4f\n  affine: %.4f\n  singular_values: %s\n  gradient_angles: %.4f\n  per_value: %.6f\n",
-              m.hu, m.affine, list(m.singular_values.data(), 3).c_str(), m.gradient_angles, m.per_value);
-  std::printf("  statistics_exponent: %.2f\n  moments_exponent: %.2f\n  singular_values_exponent: %.2f\n"
-              "  gradient_angles_exponent: %.2f\n",
-              m.statistics_exponent, m.moments_exponent, m.singular_values_exponent, m.gradient_angles_exponent);
+  std::printf("  hu: %.4f\n  affine: %.4f\n  singular_values: %s\n  gradient_angles: %.4f\n  per_value: %.6f\n", m.hu,
+              m.affine, list(m.singular_values.data(), 3).c_str(), m.gradient_angles, m.per_value);
+  std::printf(
+      "  statistics_exponent: %.2f\n  moments_exponent: %.2f\n  singular_values_exponent: %.2f\n"
+      "  gradient_angles_exponent: %.2f\n",
+      m.statistics_exponent, m.moments_exponent, m.singular_values_exponent, m.gradient_angles_exponent);
   std::printf("  sift: %s\n", list(m.sift.data(), 8).c_str());
 }
 
@@ -376,9 +377,10 @@ int main(int argc, char** argv) {
                 configured_name.c_str());
     std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
   } else {
-    std::printf("\n| genome | values | radius | ms | cv::SIFT ms | measured | modelled (this calibration) | "
-                "modelled (%s) |\n",
-                configured_name.c_str());
+    std::printf(
+        "\n| genome | values | radius | ms | cv::SIFT ms | measured | modelled (this calibration) | "
+        "modelled (%s) |\n",
+        configured_name.c_str());
     std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
   }
   for (const auto& [name, genome] : genomes) {

@@ -145,7 +145,8 @@ void BM_SingularValuesUpTo(benchmark::State& state) {
   DescriptorParams p = only_module(Module::singular_values);
   p.activation.reset();
   for (int c = 0; c < 3; ++c)
-    for (int i = 0; i < k; ++i) p.activation.set(static_cast<std::size_t>(module_offset(Module::singular_values) + 3 * c + i));
+    for (int i = 0; i < k; ++i)
+      p.activation.set(static_cast<std::size_t>(module_offset(Module::singular_values) + 3 * c + i));
   run_genome(state, p, grid_keypoints(), false);
 }
 BENCHMARK(BM_SingularValuesUpTo)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
@@ -197,7 +198,9 @@ void BM_SiftPatchDiameter(benchmark::State& state) {
 }
 BENCHMARK(BM_SiftPatchDiameter)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-void BM_SiftSparse(benchmark::State& state) { g_sift_sparse_seconds = run_sift(state, sparse_keypoints(), sift_size()); }
+void BM_SiftSparse(benchmark::State& state) {
+  g_sift_sparse_seconds = run_sift(state, sparse_keypoints(), sift_size());
+}
 BENCHMARK(BM_SiftSparse)->Unit(benchmark::kMillisecond);
 
 // PointDescriptor `name` (evaluate labels' and the GA's harness) for
@@ -216,7 +219,9 @@ double run_point_descriptor(benchmark::State& state, std::string_view name,
 
 double g_opponent_sift_seconds = 0.0;
 
-void BM_OpponentSift(benchmark::State& state) { g_opponent_sift_seconds = run_point_descriptor(state, "opponent-sift"); }
+void BM_OpponentSift(benchmark::State& state) {
+  g_opponent_sift_seconds = run_point_descriptor(state, "opponent-sift");
+}
 BENCHMARK(BM_OpponentSift)->Unit(benchmark::kMillisecond);
 
 void BM_Edd(benchmark::State& state) {

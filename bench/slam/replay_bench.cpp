@@ -68,7 +68,8 @@ void replay(benchmark::State& state, bool synchronous, bool semantics) {
       worker_ms.insert(worker_ms.end(), stats->keyframe_ms.begin(), stats->keyframe_ms.end());
       double total = 0.0;
       for (const double ms : stats->keyframe_ms) total += ms;
-      if (stats->observations_labelled) worker_us_per_point = 1000.0 * total / static_cast<double>(stats->observations_labelled);
+      if (stats->observations_labelled)
+        worker_us_per_point = 1000.0 * total / static_cast<double>(stats->observations_labelled);
     }
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * d->frames.size()));

@@ -82,47 +82,51 @@ int run(int argc, char** argv) {
   }
   const double pass_frames = report.value("frames", 0.0) / std::max(1.0, report.value("passes", 1.0));
   // Samples after the first pass (at least the first tenth of the run).
-  const auto warm = static_cast<std::size_t>(std::count_if(frames.begin(), frames.end(), [&](double f) {
-    return f <= std::max(pass_frames, frames.back() / 10.0);
-  }));
+  const auto warm = static_cast<std::size_t>(std::count_if(
+      frames.begin(), frames.end(), [&](double f) { return f <= std::max(pass_frames, frames.back() / 10.0); }));
   const std::vector<double> warm_frames(frames.begin() + static_cast<std::ptrdiff_t>(warm), frames.end()),
       warm_memory(memory.begin() + static_cast<std::ptrdiff_t>(warm), memory.end());
   const std::size_t tenth = std::max<std::size_t>(1, warm_frames.size() / 10);
   const auto first_tenth = [&](const std::vector<double>& v) {
-    return median({v.begin() + static_cast<std::ptrdiff_t>(warm), v.begin() + static_cast<std::ptrdiff_t>(warm + tenth)});
+    return median(
+        {v.begin() + static_cast<std::ptrdiff_t>(warm), v.begin() + static_cast<std::ptrdiff_t>(warm + tenth)});
   };
   const auto last_tenth = [&](const std::vector<double>& v) {
     return median({v.end() - static_cast<std::ptrdiff_t>(tenth), v.end()});
   };
 
   std::printf("soak: %.0f frames, %s, %.0f tracked, %.0f lost, %.0f relocalisations, %.0f map resets\n",
-              report.value("frames", 0.0),
-              report.value("mode", std::string("?")).c_str(), report.value("frames_tracked", 0.0),
-              report.value("frames_lost", 0.0), report.value("relocalisations", 0.0), report.value("map_resets", 0.0));
-  std::printf("resident memory: %.1f MiB at frame %.0f, %.1f MiB at the end, %.1f MiB at most; "
-              "%.3f MiB per 1000 frames after frame %.0f\n",
-              warm_memory.front(), warm_frames.front(), memory.back(), *std::max_element(memory.begin(), memory.end()),
-              1000.0 * slope(warm_frames, warm_memory), warm_frames.front());
+              report.value("frames", 0.0), report.value("mode", std::string("?")).c_str(),
+              report.value("frames_tracked", 0.0), report.value("frames_lost", 0.0),
+              report.value("relocalisations", 0.0), report.value("map_resets", 0.0));
+  std::printf(
+      "resident memory: %.1f MiB at frame %.0f, %.1f MiB at the end, %.1f MiB at most; "
+      "%.3f MiB per 1000 frames after frame %.0f\n",
+      warm_memory.front(), warm_frames.front(), memory.back(), *std::max_element(memory.begin(), memory.end()),
+      1000.0 * slope(warm_frames, warm_memory), warm_frames.front());
   std::printf("map: %.0f keyframes and %.0f points at the end, at most %.0f and %.0f\n", keyframes.back(),
               points.back(), *std::max_element(keyframes.begin(), keyframes.end()),
               *std::max_element(points.begin(), points.end()));
   const std::vector<double> warm_frame_ms(frame_ms.begin() + static_cast<std::ptrdiff_t>(warm), frame_ms.end());
   std::printf("frame time: trend %+.3f ms per 1000 frames after frame %.0f (median %.2f ms)\n",
               1000.0 * slope(warm_frames, warm_frame_ms), warm_frames.front(), median(warm_frame_ms));
-  std::printf("frame time (median of the window medians): %.2f ms in the first tenth after frame %.0f, %.2f ms "
-              "in the last tenth: ratio %.3f (tracker %.2f / %.2f ms: %.3f)\n",
-              first_tenth(frame_ms), warm_frames.front(), last_tenth(frame_ms),
-              last_tenth(frame_ms) / std::max(1e-9, first_tenth(frame_ms)), first_tenth(tracker_ms),
-              last_tenth(tracker_ms), last_tenth(tracker_ms) / std::max(1e-9, first_tenth(tracker_ms)));
+  std::printf(
+      "frame time (median of the window medians): %.2f ms in the first tenth after frame %.0f, %.2f ms "
+      "in the last tenth: ratio %.3f (tracker %.2f / %.2f ms: %.3f)\n",
+      first_tenth(frame_ms), warm_frames.front(), last_tenth(frame_ms),
+      last_tenth(frame_ms) / std::max(1e-9, first_tenth(frame_ms)), first_tenth(tracker_ms), last_tenth(tracker_ms),
+      last_tenth(tracker_ms) / std::max(1e-9, first_tenth(tracker_ms)));
 
   cv::Mat figure;
   cv::vconcat(std::vector<cv::Mat>{panel("Resident memory", "MiB", frames, {{"resident memory", memory}}),
-                                   panel("Map size", "count", frames, {{"keyframes x 100", [&] {
-                                                                          std::vector<double> k = keyframes;
-                                                                          for (double& v : k) v *= 100;
-                                                                          return k;
-                                                                        }()},
-                                                                       {"points", points}}),
+                                   panel("Map size", "count", frames,
+                                         {{"keyframes x 100",
+                                           [&] {
+                                             std::vector<double> k = keyframes;
+                                             for (double& v : k) v *= 100;
+                                             return k;
+                                           }()},
+                                          {"points", points}}),
                                    panel("Time per frame (median of each 100 frames)", "ms", frames,
                                          {{"frame", frame_ms}, {"tracker", tracker_ms}})},
               figure);

@@ -38,7 +38,7 @@ struct Scene {
   std::shared_ptr<const ImagePyramid> source;
   std::unique_ptr<ImagePyramid> current;
   std::unique_ptr<SearchImage> frame;  // built once per frame by the tracker
-  SE3d T_c_w;  // source camera = world
+  SE3d T_c_w;                          // source camera = world
   std::vector<Point> points;
   std::vector<Eigen::Vector2d> truth;  // level-0 projections in the current frame
 };
@@ -117,9 +117,8 @@ double min_of(const std::vector<double>& v) { return *std::min_element(v.begin()
 
 void per_point(benchmark::State& state, std::size_t points) {
   state.counters["points"] = static_cast<double>(points);
-  state.counters["per_point"] = benchmark::Counter(static_cast<double>(points),
-                                                   benchmark::Counter::kIsIterationInvariantRate |
-                                                       benchmark::Counter::kInvert);
+  state.counters["per_point"] = benchmark::Counter(
+      static_cast<double>(points), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_MakePatchTemplate(benchmark::State& state) {
@@ -207,10 +206,10 @@ void BM_OpenCvMatchTemplate(benchmark::State& state) {
     const Eigen::Vector2d p = ImagePyramid::level0_to_level(truth + kPredictionError, job.level);
     const int r = static_cast<int>(std::ceil(radius_at(job.level)));
     const cv::Mat& image = s.current->level(job.level).image;
-    job.window = cv::Rect(static_cast<int>(std::lround(p.x())) - r - kPatchSize / 2,
-                          static_cast<int>(std::lround(p.y())) - r - kPatchSize / 2, 2 * r + kPatchSize,
-                          2 * r + kPatchSize) &
-                 cv::Rect(0, 0, image.cols, image.rows);
+    job.window =
+        cv::Rect(static_cast<int>(std::lround(p.x())) - r - kPatchSize / 2,
+                 static_cast<int>(std::lround(p.y())) - r - kPatchSize / 2, 2 * r + kPatchSize, 2 * r + kPatchSize) &
+        cv::Rect(0, 0, image.cols, image.rows);
     if (job.window.width >= kPatchSize && job.window.height >= kPatchSize) jobs.push_back(job);
   }
   cv::Mat result;
@@ -281,7 +280,12 @@ void BM_PoseUpdate(benchmark::State& state) {
 }
 // Arguments: measurements, Gauss-Newton steps (each run also evaluates the
 // weights and information at the final pose once).
-BENCHMARK(BM_PoseUpdate)->Args({50, 1})->Args({1000, 1})->Args({1000, 10})->Unit(benchmark::kMicrosecond)->ComputeStatistics("min", min_of);
+BENCHMARK(BM_PoseUpdate)
+    ->Args({50, 1})
+    ->Args({1000, 1})
+    ->Args({1000, 10})
+    ->Unit(benchmark::kMicrosecond)
+    ->ComputeStatistics("min", min_of);
 
 }  // namespace
 

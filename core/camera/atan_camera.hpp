@@ -57,7 +57,7 @@ struct AtanCamera {
   double fy = 1.0;
   double cx = 0.0;  // principal point in pixels
   double cy = 0.0;
-  double w = 0.0;   // FOV distortion parameter in radians, [0, pi)
+  double w = 0.0;  // FOV distortion parameter in radians, [0, pi)
 
   // Normalised coordinates -> distorted normalised coordinates.
   template <class T>

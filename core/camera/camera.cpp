@@ -24,15 +24,13 @@ CameraModel rescaled(const CameraModel& model, double sx, double sy) {
 
 }  // namespace
 
-Camera::Camera(int width, int height, CameraModel model)
-    : width_(width), height_(height), model_(std::move(model)) {
+Camera::Camera(int width, int height, CameraModel model) : width_(width), height_(height), model_(std::move(model)) {
   if (width_ < 1 || height_ < 1)
     throw Error("camera: image size must be at least 1x1 pixels, got " + std::to_string(width_) + "x" +
                 std::to_string(height_));
   if (!(std::isfinite(fx()) && fx() > 0.0 && std::isfinite(fy()) && fy() > 0.0))
     throw Error("camera: focal lengths fx, fy must be finite and > 0");
-  if (!(std::isfinite(cx()) && std::isfinite(cy())))
-    throw Error("camera: principal point cx, cy must be finite");
+  if (!(std::isfinite(cx()) && std::isfinite(cy()))) throw Error("camera: principal point cx, cy must be finite");
   if (const auto* pinhole = std::get_if<PinholeRadTan>(&model_)) {
     for (double k : {pinhole->k1, pinhole->k2, pinhole->p1, pinhole->p2, pinhole->k3})
       if (!std::isfinite(k)) throw Error("camera: distortion coefficients must be finite");
@@ -54,10 +52,18 @@ std::string Camera::model_name() const {
   });
 }
 
-double Camera::fx() const { return visit([](const auto& m) { return m.fx; }); }
-double Camera::fy() const { return visit([](const auto& m) { return m.fy; }); }
-double Camera::cx() const { return visit([](const auto& m) { return m.cx; }); }
-double Camera::cy() const { return visit([](const auto& m) { return m.cy; }); }
+double Camera::fx() const {
+  return visit([](const auto& m) { return m.fx; });
+}
+double Camera::fy() const {
+  return visit([](const auto& m) { return m.fy; });
+}
+double Camera::cx() const {
+  return visit([](const auto& m) { return m.cx; });
+}
+double Camera::cy() const {
+  return visit([](const auto& m) { return m.cy; });
+}
 
 Eigen::Matrix3d Camera::pinhole_matrix() const {
   Eigen::Matrix3d K = Eigen::Matrix3d::Identity();

@@ -37,8 +37,10 @@ void check_atan_covers_image(const ConfigNode& node, const Camera& camera, const
     for (double y : y_edges) {
       const Eigen::Vector2d xd((x - atan_model.cx) / atan_model.fx, (y - atan_model.cy) / atan_model.fy);
       if (xd.norm() >= atan_model.max_distorted_radius())
-        node.fail("w", "a value small enough that every image corner lies inside the model's 90-degree field "
-                       "(corner " + pixel_text({x, y}) + " does not)",
+        node.fail("w",
+                  "a value small enough that every image corner lies inside the model's 90-degree field "
+                  "(corner " +
+                      pixel_text({x, y}) + " does not)",
                   exact(atan_model.w));
     }
 }
@@ -52,15 +54,13 @@ void check_pinhole_covers_image(const ConfigNode& node, const Camera& camera, co
   constexpr int kSteps = 32;
   for (int j = 0; j <= kSteps; ++j)
     for (int i = 0; i <= kSteps; ++i) {
-      const Eigen::Vector2d px((camera.width() - 1) * i / double(kSteps),
-                               (camera.height() - 1) * j / double(kSteps));
+      const Eigen::Vector2d px((camera.width() - 1) * i / double(kSteps), (camera.height() - 1) * j / double(kSteps));
       const Eigen::Vector3d ray = pinhole.unproject(px);
       const bool round_trip = (pinhole.project(ray) - px).norm() < 1e-6;
       const bool one_to_one = pinhole.distort_jacobian(ray.head<2>()).determinant() > 0.0;
       if (!round_trip || !one_to_one)
-        node.fail("distortion",
-                  "coefficients that can be inverted over the whole image (at pixel " + pixel_text(px) +
-                      " the distortion polynomial has folded back)");
+        node.fail("distortion", "coefficients that can be inverted over the whole image (at pixel " + pixel_text(px) +
+                                    " the distortion polynomial has folded back)");
     }
 }
 
@@ -113,14 +113,13 @@ void save_camera(const std::filesystem::path& path, const Camera& camera, const 
       << "height: " << camera.height() << "\n"
       << "fx: " << exact(camera.fx()) << "  # focal lengths in pixels\n"
       << "fy: " << exact(camera.fy()) << "\n"
-      << "cx: " << exact(camera.cx())
-      << "  # principal point in pixels; (0,0) is the centre of the top-left pixel\n"
+      << "cx: " << exact(camera.cx()) << "  # principal point in pixels; (0,0) is the centre of the top-left pixel\n"
       << "cy: " << exact(camera.cy()) << "\n";
   camera.visit([&](const auto& m) {
     using M = std::decay_t<decltype(m)>;
     if constexpr (std::is_same_v<M, PinholeRadTan>) {
-      out << "distortion: [" << exact(m.k1) << ", " << exact(m.k2) << ", " << exact(m.p1) << ", "
-          << exact(m.p2) << ", " << exact(m.k3) << "]  # OpenCV order k1, k2, p1, p2, k3\n";
+      out << "distortion: [" << exact(m.k1) << ", " << exact(m.k2) << ", " << exact(m.p1) << ", " << exact(m.p2) << ", "
+          << exact(m.k3) << "]  # OpenCV order k1, k2, p1, p2, k3\n";
     } else {
       out << "w: " << exact(m.w) << "  # FOV distortion parameter in radians (0 = none)\n";
     }

@@ -29,7 +29,6 @@ Camera load_camera(const std::filesystem::path& path);
 // Writes atomically, every number with 17 significant digits so that
 // load_camera() reads back exactly the same camera. `comment_header`
 // (may span lines) is written as '#' comments at the top.
-void save_camera(const std::filesystem::path& path, const Camera& camera,
-                 const std::string& comment_header = {});
+void save_camera(const std::filesystem::path& path, const Camera& camera, const std::string& comment_header = {});
 
 }  // namespace facadeslam

@@ -37,8 +37,7 @@ struct PinholeRadTan {
     const T xx = x * x, yy = y * y, xy = x * y;
     const T r2 = xx + yy;
     const T radial = T(1.0) + r2 * (k1 + r2 * (k2 + r2 * k3));
-    return {x * radial + 2.0 * p1 * xy + p2 * (r2 + 2.0 * xx),
-            y * radial + p1 * (r2 + 2.0 * yy) + 2.0 * p2 * xy};
+    return {x * radial + 2.0 * p1 * xy + p2 * (r2 + 2.0 * xx), y * radial + p1 * (r2 + 2.0 * yy) + 2.0 * p2 * xy};
   }
 
   // d distort / d xn.

@@ -37,8 +37,8 @@ std::string Range::describe() const {
   if (!has_min && !has_max) return "a finite number";
   if (!has_max) return std::string("a number ") + (min_exclusive ? "> " : ">= ") + format_number(min);
   if (!has_min) return std::string("a number ") + (max_exclusive ? "< " : "<= ") + format_number(max);
-  return std::string("a number in ") + (min_exclusive ? "(" : "[") + format_number(min) + ", " +
-         format_number(max) + (max_exclusive ? ")" : "]");
+  return std::string("a number in ") + (min_exclusive ? "(" : "[") + format_number(min) + ", " + format_number(max) +
+         (max_exclusive ? ")" : "]");
 }
 
 ConfigNode::ConfigNode(YAML::Node node, std::shared_ptr<const std::string> origin, std::string prefix)
@@ -66,9 +66,7 @@ ConfigNode ConfigNode::parse_string(const std::string& yaml, const std::string& 
   return ConfigNode(root, std::make_shared<const std::string>(origin), "");
 }
 
-std::string ConfigNode::full_key(const std::string& key) const {
-  return prefix_.empty() ? key : prefix_ + "." + key;
-}
+std::string ConfigNode::full_key(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
 
 void ConfigNode::fail(const std::string& key, const std::string& expected, const std::string& got) const {
   std::string message = *origin_ + ": key '" + full_key(key) + "': expected " + expected;
@@ -77,8 +75,11 @@ void ConfigNode::fail(const std::string& key, const std::string& expected, const
   constexpr std::size_t kShownValue = 80;
   if (!got.empty() && got.size() <= kShownValue) message += ", got '" + got + "'";
   if (got.size() > kShownValue)
-    message.append(", got '").append(got, 0, kShownValue).append("...' (").append(std::to_string(got.size())).append(
-        " characters)");
+    message.append(", got '")
+        .append(got, 0, kShownValue)
+        .append("...' (")
+        .append(std::to_string(got.size()))
+        .append(" characters)");
   throw Error(message);
 }
 
@@ -221,7 +222,8 @@ std::vector<double> ConfigNode::get_doubles(const std::string& key, std::size_t 
   return out;
 }
 
-std::vector<std::string> ConfigNode::get_choices(const std::string& key, const std::vector<std::string>& allowed) const {
+std::vector<std::string> ConfigNode::get_choices(const std::string& key,
+                                                 const std::vector<std::string>& allowed) const {
   const YAML::Node v = required(key);
   std::string expected = "a list of distinct names out of";
   for (const auto& a : allowed) expected += " " + a;
@@ -275,8 +277,8 @@ void ConfigNode::finish() const {
     if (!entry.first.IsScalar()) {
       std::string where = prefix_.empty() ? std::string("at the top level") : "in '";
       if (!prefix_.empty()) where.append(prefix_).append("'");
-      throw Error(*origin_ + ": " + where + ": expected keys that are plain names, got " +
-                  scalar_text(entry.first) + " as a key");
+      throw Error(*origin_ + ": " + where + ": expected keys that are plain names, got " + scalar_text(entry.first) +
+                  " as a key");
     }
     const std::string key = entry.first.Scalar();
     if (!read_keys_->count(key)) fail(key, "no such key here (unknown key; check its spelling)");

@@ -55,8 +55,7 @@ class ConfigNode {
   bool get_bool(const std::string& key) const;
   bool get_bool(const std::string& key, bool fallback) const;
   // A sequence of numbers; `size` 0 accepts any length.
-  std::vector<double> get_doubles(const std::string& key, std::size_t size = 0,
-                                  Range range = {}) const;
+  std::vector<double> get_doubles(const std::string& key, std::size_t size = 0, Range range = {}) const;
   // A sequence of strings, each one of `allowed`; duplicates are an error.
   std::vector<std::string> get_choices(const std::string& key, const std::vector<std::string>& allowed) const;
 
@@ -72,8 +71,7 @@ class ConfigNode {
   // Call it on each mapping after reading it.
   void finish() const;
 
-  [[noreturn]] void fail(const std::string& key, const std::string& expected,
-                         const std::string& got = {}) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& expected, const std::string& got = {}) const;
   const std::string& origin() const { return *origin_; }
   std::string full_key(const std::string& key) const;
 

@@ -13,7 +13,7 @@ namespace facadeslam {
 namespace {
 
 // Bresenham circle of radius 3 used by FAST, in order around the circle.
-constexpr int kCircle[16][2] = {{0, -3}, {1, -3}, {2, -2}, {3, -1}, {3, 0},  {3, 1},  {2, 2},  {1, 3},
+constexpr int kCircle[16][2] = {{0, -3}, {1, -3}, {2, -2}, {3, -1}, {3, 0},  {3, 1},   {2, 2},   {1, 3},
                                 {0, 3},  {-1, 3}, {-2, 2}, {-3, 1}, {-3, 0}, {-3, -1}, {-2, -2}, {-1, -3}};
 
 // FAST-9 score: the largest t for which some arc of 9 contiguous circle pixels
@@ -70,8 +70,8 @@ void fast_scores(const std::uint8_t* const* centres, std::size_t count, const in
     for (int k = 0; k < 16; ++k) {
       const v_int16x8 lo = cv::v_min(cv::v_min(lo4[k], lo4[(k + 4) & 15]), d[(k + 8) & 15]);
       const v_int16x8 hi = cv::v_max(cv::v_max(hi4[k], hi4[(k + 4) & 15]), d[(k + 8) & 15]);
-      brighter = cv::v_max(brighter, lo);  // all > centre + t
-      darker = cv::v_min(darker, hi);      // all < centre - t, negated below
+      brighter = cv::v_max(brighter, lo);                     // all > centre + t
+      darker = cv::v_min(darker, hi);                         // all < centre - t, negated below
       sad = sad + cv::v_reinterpret_as_s16(cv::v_abs(d[k]));  // at most 16 x 255: fits
     }
     alignas(16) std::int16_t best[8], sums[8];

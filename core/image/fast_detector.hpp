@@ -10,16 +10,16 @@
 namespace facadeslam {
 
 struct Corner {
-  int x = 0;          // pixel coordinates at the corner's pyramid level
+  int x = 0;  // pixel coordinates at the corner's pyramid level
   int y = 0;
   float score = 0.f;  // FAST score (higher = stronger)
 };
 
 struct FastOptions {
-  int threshold = 10;       // FAST intensity threshold at this level
-  int cell_size = 32;       // bucketing cell in pixels at this level
-  int max_per_cell = 20;    // strongest corners kept per cell (0 = no bucketing)
-  int border = 4;           // corners closer than this to the edge are dropped
+  int threshold = 10;     // FAST intensity threshold at this level
+  int cell_size = 32;     // bucketing cell in pixels at this level
+  int max_per_cell = 20;  // strongest corners kept per cell (0 = no bucketing)
+  int border = 4;         // corners closer than this to the edge are dropped
 };
 
 // Detects FAST-9 corners with non-maximum suppression on an 8-bit grey image,

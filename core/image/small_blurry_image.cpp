@@ -64,7 +64,8 @@ Se2Motion align_small_blurry_images(const cv::Mat& reference, const cv::Mat& cur
     for (int y = kMargin; y < current.rows - kMargin; ++y)
       for (int x = kMargin; x < current.cols - kMargin; ++x) {
         const Eigen::Vector2d d(x - c.x(), y - c.y());
-        const Eigen::Vector2d w(ct * d.x() - st * d.y() + c.x() + params[1], st * d.x() + ct * d.y() + c.y() + params[2]);
+        const Eigen::Vector2d w(ct * d.x() - st * d.y() + c.x() + params[1],
+                                st * d.x() + ct * d.y() + c.y() + params[2]);
         const double r = sample(reference, w.x(), w.y()) + params[3] - current.at<float>(y, x);
         const Eigen::Vector2d grad(sample(gx, w.x(), w.y()), sample(gy, w.x(), w.y()));
         // d w / d theta = (-st dx - ct dy, ct dx - st dy)

@@ -28,9 +28,9 @@ double sbi_difference(const cv::Mat& a, const cv::Mat& b);
 // In-image motion between two SBIs: current(x) ~ reference(R(theta) (x - c) + c + t),
 // with c the image centre, found by Gauss-Newton on the image gradients.
 struct Se2Motion {
-  double theta = 0;           // radians
-  Eigen::Vector2d t{0, 0};    // SBI pixels
-  double residual_rms = 0;    // after alignment, in SBI grey levels
+  double theta = 0;         // radians
+  Eigen::Vector2d t{0, 0};  // SBI pixels
+  double residual_rms = 0;  // after alignment, in SBI grey levels
 };
 Se2Motion align_small_blurry_images(const cv::Mat& reference, const cv::Mat& current, int iterations = 30);
 

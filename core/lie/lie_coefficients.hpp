@@ -135,8 +135,7 @@ T inverse_jacobian_coefficient(const T& theta_sq) {
       for (int k = 0; k < kSeriesTerms; ++k) c[k] *= 2 * k + 1;
       return c;
     }();
-    static constexpr auto kSinc =
-        alternating_factorial_series<kSeriesTerms>(1);  // sin(theta)/theta
+    static constexpr auto kSinc = alternating_factorial_series<kSeriesTerms>(1);  // sin(theta)/theta
     return polynomial(theta_sq, kNumerator) / (T(2) * polynomial(theta_sq, kSinc));
   }
   const T half = T(0.5) * sqrt(theta_sq);

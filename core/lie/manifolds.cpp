@@ -35,9 +35,7 @@ Eigen::Matrix<double, 3, 4> quaternion_minus_jacobian(const QuaternionCoeffs& q)
 
 // The unit quaternion of a parameter block (x may carry a slightly non-unit
 // quaternion; the Jacobians are those at its normalisation).
-QuaternionCoeffs unit_quaternion_of(const double* x) {
-  return Eigen::Map<const QuaternionCoeffs>(x).normalized();
-}
+QuaternionCoeffs unit_quaternion_of(const double* x) { return Eigen::Map<const QuaternionCoeffs>(x).normalized(); }
 
 // A block Plus/Minus can work with: finite values and a non-zero quaternion.
 bool valid_block(const double* x, int size) {
@@ -119,8 +117,7 @@ bool Sim3Manifold::Minus(const double* y, const double* x, double* y_minus_x) co
   // y x^-1 = (R_y R_x^T, t_y - e^sigma R_y R_x^T t_x, e^sigma).
   const double sigma = y[7] - x[7];
   const SO3d rotation = se3_from_params(y).so3() * se3_from_params(x).so3().inverse();
-  const Vector3 translation =
-      Vector3(y[4], y[5], y[6]) - std::exp(sigma) * (rotation * Vector3(x[4], x[5], x[6]));
+  const Vector3 translation = Vector3(y[4], y[5], y[6]) - std::exp(sigma) * (rotation * Vector3(x[4], x[5], x[6]));
   const Vector3 omega = rotation.log();
   Eigen::Map<Sim3d::Tangent> out(y_minus_x);
   out << Sim3d::w_matrix(omega, sigma).inverse() * translation, omega, sigma;

@@ -40,8 +40,7 @@ inline constexpr int kSim3ParamSize = 8;
 // never throws (an invalid block gives NaN, which Ceres rejects as a step).
 template <class T>
 SE3<T> se3_from_params(const T* params) {
-  return SE3<T>(SO3<T>::from_quaternion_unchecked(
-                    Eigen::Quaternion<T>(Eigen::Map<const Eigen::Quaternion<T>>(params))),
+  return SE3<T>(SO3<T>::from_quaternion_unchecked(Eigen::Quaternion<T>(Eigen::Map<const Eigen::Quaternion<T>>(params))),
                 Eigen::Matrix<T, 3, 1>(params[4], params[5], params[6]));
 }
 
@@ -60,8 +59,7 @@ template <class T>
 Sim3<T> sim3_from_params(const T* params) {
   using std::exp;
   return Sim3<T>::from_parts_unchecked(
-      SO3<T>::from_quaternion_unchecked(
-          Eigen::Quaternion<T>(Eigen::Map<const Eigen::Quaternion<T>>(params))),
+      SO3<T>::from_quaternion_unchecked(Eigen::Quaternion<T>(Eigen::Map<const Eigen::Quaternion<T>>(params))),
       Eigen::Matrix<T, 3, 1>(params[4], params[5], params[6]), exp(params[7]));
 }
 

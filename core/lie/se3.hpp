@@ -38,16 +38,14 @@ class SE3 {
 
   // The identity transform.
   SE3() : translation_(Vector3::Zero()) {}
-  SE3(const SO3<T>& rotation, const Vector3& translation)
-      : rotation_(rotation), translation_(translation) {}
+  SE3(const SO3<T>& rotation, const Vector3& translation) : rotation_(rotation), translation_(translation) {}
   // The quaternion is normalised (see SO3).
   SE3(const Quaternion& q, const Vector3& translation) : rotation_(q), translation_(translation) {}
   // The matrix is projected onto the nearest rotation (see SO3).
   SE3(const Matrix3& r, const Vector3& translation) : rotation_(r), translation_(translation) {}
   // From a homogeneous 4x4 matrix [[R, t], [0, 1]] (the bottom row is ignored).
   explicit SE3(const Matrix4& m)
-      : rotation_(Matrix3(m.template topLeftCorner<3, 3>())),
-        translation_(m.template topRightCorner<3, 1>()) {}
+      : rotation_(Matrix3(m.template topLeftCorner<3, 3>())), translation_(m.template topRightCorner<3, 1>()) {}
 
   // exp([rho, omega]) = (exp(omega), V rho) with V = J_l(omega)
   //                   = I + (1 - cos theta)/theta^2 hat + (theta - sin theta)/theta^3 hat^2.
@@ -133,9 +131,7 @@ class SE3 {
 
   // Jacobian of exp(delta) * T * p with respect to delta at delta = 0, for the
   // left-multiplicative update: [I3, -hat(T p)] (3x6, columns [rho, omega]).
-  PointJacobian left_update_point_jacobian(const Vector3& p) const {
-    return left_update_point_jacobian_at(*this * p);
-  }
+  PointJacobian left_update_point_jacobian(const Vector3& p) const { return left_update_point_jacobian_at(*this * p); }
 
   // The same Jacobian from the already transformed point q = T p: [I3, -hat(q)].
   static PointJacobian left_update_point_jacobian_at(const Vector3& q) {

@@ -49,8 +49,7 @@ class Sim3 {
   Sim3(const SO3<T>& rotation, const Vector3& translation, const T& scale)
       : rotation_(rotation), translation_(translation), scale_(checked_scale(scale)) {}
   // The same without the scale check, for solver inner loops.
-  static Sim3 from_parts_unchecked(const SO3<T>& rotation, const Vector3& translation,
-                                   const T& scale) {
+  static Sim3 from_parts_unchecked(const SO3<T>& rotation, const Vector3& translation, const T& scale) {
     return Sim3(rotation, translation, scale, UncheckedTag{});
   }
   // A rigid transform with a scale: p -> scale R p + t.
@@ -90,9 +89,8 @@ class Sim3 {
 
   // S_a_c = S_a_b * S_b_c = (R_ab R_bc, s_ab R_ab t_bc + t_ab, s_ab s_bc).
   Sim3 operator*(const Sim3& other) const {
-    return Sim3(rotation_ * other.rotation_,
-                scale_ * (rotation_ * other.translation_) + translation_, scale_ * other.scale_,
-                UncheckedTag{});
+    return Sim3(rotation_ * other.rotation_, scale_ * (rotation_ * other.translation_) + translation_,
+                scale_ * other.scale_, UncheckedTag{});
   }
   Sim3& operator*=(const Sim3& other) { return *this = *this * other; }
 
@@ -130,8 +128,7 @@ class Sim3 {
   // hat([rho, omega, sigma]) = [[hat(omega) + sigma I, rho], [0, 0]].
   static Matrix4 hat(const Tangent& xi) {
     Matrix4 m = Matrix4::Zero();
-    m.template topLeftCorner<3, 3>() =
-        SO3<T>::hat(xi.template segment<3>(3)) + xi(6) * Matrix3::Identity();
+    m.template topLeftCorner<3, 3>() = SO3<T>::hat(xi.template segment<3>(3)) + xi(6) * Matrix3::Identity();
     m.template topRightCorner<3, 1>() = xi.template head<3>();
     return m;
   }
@@ -175,8 +172,8 @@ class Sim3 {
 
   template <class U>
   Sim3<U> cast() const {
-    return Sim3<U>::from_parts_unchecked(rotation_.template cast<U>(),
-                                         translation_.template cast<U>(), static_cast<U>(scale_));
+    return Sim3<U>::from_parts_unchecked(rotation_.template cast<U>(), translation_.template cast<U>(),
+                                         static_cast<U>(scale_));
   }
 
  private:
@@ -186,8 +183,7 @@ class Sim3 {
 
   static T checked_scale(const T& s) {
     using std::isfinite;
-    if (!(s > T(0)) || !isfinite(s))
-      throw std::invalid_argument("Sim3: the scale must be finite and > 0");
+    if (!(s > T(0)) || !isfinite(s)) throw std::invalid_argument("Sim3: the scale must be finite and > 0");
     return s;
   }
 
@@ -195,8 +191,7 @@ class Sim3 {
     using std::cbrt;
     const Matrix3 sr = m.template topLeftCorner<3, 3>();
     const T det = sr.determinant();
-    if (!(det > T(0)))
-      throw std::invalid_argument("Sim3: the 3x3 block of the matrix must have det > 0");
+    if (!(det > T(0))) throw std::invalid_argument("Sim3: the 3x3 block of the matrix must have det > 0");
     const T s = cbrt(det);
     return Sim3(SO3<T>(Matrix3(sr / s)), m.template topRightCorner<3, 1>(), s);
   }

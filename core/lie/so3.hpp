@@ -48,9 +48,7 @@ class SO3 {
 
   // From any quaternion, normalised without checks: a zero or non-finite
   // quaternion gives NaN or infinite entries instead of an exception.
-  static SO3 from_quaternion_unchecked(const Quaternion& q) {
-    return SO3(normalised(q), UnitTag{});
-  }
+  static SO3 from_quaternion_unchecked(const Quaternion& q) { return SO3(normalised(q), UnitTag{}); }
 
   // From a 3x3 matrix, projected onto the nearest rotation (Frobenius norm,
   // via SVD: R = U diag(1, 1, det(U V^T)) V^T) so that a slightly
@@ -139,14 +137,11 @@ class SO3 {
   // Valid for |omega| < 2 pi (always the case for the output of log()).
   static Matrix3 left_jacobian_inverse(const Vector3& omega) {
     const Matrix3 h = hat(omega);
-    return Matrix3::Identity() - T(0.5) * h +
-           lie_detail::inverse_jacobian_coefficient(omega.squaredNorm()) * h * h;
+    return Matrix3::Identity() - T(0.5) * h + lie_detail::inverse_jacobian_coefficient(omega.squaredNorm()) * h * h;
   }
 
   // J_r^-1(omega) = J_l^-1(-omega) = I + hat/2 + D hat^2.
-  static Matrix3 right_jacobian_inverse(const Vector3& omega) {
-    return left_jacobian_inverse(-omega);
-  }
+  static Matrix3 right_jacobian_inverse(const Vector3& omega) { return left_jacobian_inverse(-omega); }
 
   // d(exp(delta) R p)/d(delta) at delta = 0: -hat(R p).
   Matrix3 left_update_point_jacobian(const Vector3& p) const { return -hat(*this * p); }
@@ -171,8 +166,7 @@ class SO3 {
 
   static Matrix3 nearest_rotation(const Matrix3& m) {
     using std::isfinite;
-    if (!isfinite(m.squaredNorm()))
-      throw std::invalid_argument("SO3: the rotation matrix must be finite");
+    if (!isfinite(m.squaredNorm())) throw std::invalid_argument("SO3: the rotation matrix must be finite");
     if constexpr (!std::is_floating_point_v<T>) {
       return m;
     } else {

@@ -28,9 +28,9 @@ inline Eigen::Vector3d optical_axis_w(const SE3d& T_c_w) { return T_c_w.rotation
 
 // Where a map point was seen in a keyframe.
 struct Measurement {
-  int level = 0;                   // pyramid level it was found at
-  Eigen::Vector2d pixel{0, 0};     // level-0 pixel coordinates
-  bool from_source = false;        // this keyframe is the point's source
+  int level = 0;                // pyramid level it was found at
+  Eigen::Vector2d pixel{0, 0};  // level-0 pixel coordinates
+  bool from_source = false;     // this keyframe is the point's source
 };
 
 using Measurements = std::map<MapPoint::Id, Measurement>;

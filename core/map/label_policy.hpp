@@ -20,11 +20,11 @@
 namespace facadeslam {
 
 struct LabelPolicy {
-  UnreliableLabels unreliable;      // weighed down in the pose update
-  UnreliableLabels moving;          // left out altogether
-  double unreliable_weight = 0.1;   // x Tukey's weight (0: not searched, like a moving point)
-  int min_reliable_points = 100;    // fewer other points in view: left-out points are searched after all
-  double verify_px = 2.0;           // search-level pixels; 0: never verified
+  UnreliableLabels unreliable;     // weighed down in the pose update
+  UnreliableLabels moving;         // left out altogether
+  double unreliable_weight = 0.1;  // x Tukey's weight (0: not searched, like a moving point)
+  int min_reliable_points = 100;   // fewer other points in view: left-out points are searched after all
+  double verify_px = 2.0;          // search-level pixels; 0: never verified
 
   bool active() const { return unreliable.any() || moving.any(); }
   // Left out of tracking, bundle adjustment and the map (once unmeasured).

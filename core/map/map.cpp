@@ -48,7 +48,8 @@ void MapEditor::set_view(MapPoint& point, const PatchSource& view, const PointGe
   point.view_geometry_ = geometry;
 }
 
-void MapEditor::set_source(MapPoint& point, KeyFrame& keyframe, const PatchSource& source, const PointGeometry& geometry) {
+void MapEditor::set_source(MapPoint& point, KeyFrame& keyframe, const PatchSource& source,
+                           const PointGeometry& geometry) {
   point.source_ = source;
   point.geometry_ = geometry;
   if (const auto it = keyframe.measurements_.find(point.id()); it != keyframe.measurements_.end())

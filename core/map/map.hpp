@@ -32,9 +32,9 @@ namespace facadeslam {
 // A point with a copy of its geometry, taken under the map's lock.
 struct PointSnapshot {
   std::shared_ptr<MapPoint> point;
-  PatchSource source;            // MapPoint::source()
+  PatchSource source;  // MapPoint::source()
   PointGeometry geometry;
-  PatchSource view;              // MapPoint::view()
+  PatchSource view;  // MapPoint::view()
   PointGeometry view_geometry;
 };
 

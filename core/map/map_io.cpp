@@ -30,8 +30,7 @@ std::vector<double> camera_parameters(const Camera& camera) {
   });
 }
 
-Camera make_camera(const std::string& model, int width, int height, const std::vector<double>& p,
-                   ByteReader& in) {
+Camera make_camera(const std::string& model, int width, int height, const std::vector<double>& p, ByteReader& in) {
   if (model == "pinhole" && p.size() == 9)
     return Camera(width, height, PinholeRadTan{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]});
   if (model == "atan" && p.size() == 5) return Camera(width, height, AtanCamera{p[0], p[1], p[2], p[3], p[4]});
@@ -258,8 +257,8 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
   if (version < kOldestMapFormatVersion || version > kMapFormatVersion)
     fail_file(path, "map format version " + std::to_string(version) + ", this build reads versions " +
                         std::to_string(kOldestMapFormatVersion) + " to " + std::to_string(kMapFormatVersion));
-  const auto stored_checksum =
-      ByteReader(std::string_view(data).substr(data.size() - 8), path, "corrupt map file").get<std::uint64_t>("checksum");
+  const auto stored_checksum = ByteReader(std::string_view(data).substr(data.size() - 8), path, "corrupt map file")
+                                   .get<std::uint64_t>("checksum");
   if (fnv1a64(data.data(), data.size() - 8) != stored_checksum)
     fail_file(path, "corrupt map file: checksum mismatch (truncated or damaged)");
 
@@ -299,15 +298,16 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
       m.level = in.get<std::int32_t>("measurement");
       if (m.level < 0 || m.level >= kPyramidLevels)
         in.fail("measurement level " + std::to_string(m.level) + " in keyframe " + std::to_string(id) +
-                   " (expected 0.." + std::to_string(kPyramidLevels - 1) + ")");
+                " (expected 0.." + std::to_string(kPyramidLevels - 1) + ")");
       m.pixel.x() = get_finite(in, "measurement pixel");
       m.pixel.y() = get_finite(in, "measurement pixel");
       m.from_source = in.get<std::uint8_t>("measurement") != 0;
       if (!measurements.emplace(point_id, m).second)
         in.fail("keyframe " + std::to_string(id) + " measures point " + std::to_string(point_id) + " twice");
     }
-    auto kf = std::make_shared<KeyFrame>(
-        id, Frame{static_cast<std::size_t>(frame_index), timestamp, colour, {}, pyramid}, T_c_w, std::move(measurements));
+    auto kf =
+        std::make_shared<KeyFrame>(id, Frame{static_cast<std::size_t>(frame_index), timestamp, colour, {}, pyramid},
+                                   T_c_w, std::move(measurements));
     depth_stats.emplace_back(kf, mean_depth, depth_sigma);
     pyramids.emplace(id, pyramid);
     keyframes.push_back(std::move(kf));
@@ -344,7 +344,7 @@ Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expec
     for (const auto& [point_id, m] : kf->measurements())
       if (!point_ids.count(point_id))
         in.fail("keyframe " + std::to_string(kf->id()) + " measures point " + std::to_string(point_id) +
-                   ", which the map does not have");
+                ", which the map does not have");
   // Ids handed out after loading must not repeat the loaded ones.
   for (const auto& kf : keyframes)
     if (kf->id() >= next_kf) in.fail("keyframe id " + std::to_string(kf->id()) + " is not below the id counter");

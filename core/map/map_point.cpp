@@ -6,8 +6,13 @@
 namespace facadeslam {
 
 MapPoint::MapPoint(Id id, PatchSource source, const PointGeometry& geometry)
-    : id_(id), source_(std::move(source)), geometry_(geometry), view_(source_), view_geometry_(geometry),
-      packed_label_(kUnlabelled), packed_own_label_(kUnlabelled) {}
+    : id_(id),
+      source_(std::move(source)),
+      geometry_(geometry),
+      view_(source_),
+      view_geometry_(geometry),
+      packed_label_(kUnlabelled),
+      packed_own_label_(kUnlabelled) {}
 
 namespace {
 

@@ -151,7 +151,7 @@ class MapPoint {
   // thread; a mutex keeps a reader from seeing half an update.
   mutable std::mutex votes_mutex_;
   ClassVotes votes_{};
-  RegionViews region_views_;            // under votes_mutex_
+  RegionViews region_views_;  // under votes_mutex_
   std::atomic<bool> in_moving_region_{false};
   std::atomic<bool> bad_{false};
   std::atomic<std::uint32_t> searched_{0}, found_{0};

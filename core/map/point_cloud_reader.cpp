@@ -16,12 +16,11 @@ namespace {
 
 // Every complaint says what a map.ply is, so that a user who passed the
 // wrong file sees at once what the command wanted.
-constexpr const char* kExpected =
-    " (expected the binary little-endian PLY that `facadeslam replay` writes as map.ply)";
+constexpr const char* kExpected = " (expected the binary little-endian PLY that `facadeslam replay` writes as map.ply)";
 
 // The properties of the vertex element, in file order.
 constexpr std::pair<const char*, const char*> kProperties[] = {
-    {"float", "x"},   {"float", "y"},    {"float", "z"},     {"uchar", "red"},
+    {"float", "x"},     {"float", "y"},    {"float", "z"},     {"uchar", "red"},
     {"uchar", "green"}, {"uchar", "blue"}, {"uchar", "label"}, {"float", "confidence"}};
 constexpr std::size_t kVertexBytes = 3 * 4 + 4 * 1 + 4;
 // Our header is about 700 bytes; a file without end_header this early is not ours.
@@ -44,8 +43,8 @@ PointCloudClass parse_class(const std::filesystem::path& path, const std::string
   PointCloudClass c;
   int r = -1, g = -1, b = -1;
   std::string extra;
-  if (!(in >> c.id >> c.name >> r >> g >> b) || (in >> extra) || c.id < 0 || c.id > 255 || r < 0 || r > 255 ||
-      g < 0 || g > 255 || b < 0 || b > 255)
+  if (!(in >> c.id >> c.name >> r >> g >> b) || (in >> extra) || c.id < 0 || c.id > 255 || r < 0 || r > 255 || g < 0 ||
+      g > 255 || b < 0 || b > 255)
     fail(path, "bad class line 'comment class " + rest + "': expected 'comment class <id 0-255> <name> <r> <g> <b>'");
   c.r = static_cast<std::uint8_t>(r);
   c.g = static_cast<std::uint8_t>(g);
@@ -89,8 +88,7 @@ Header parse_header(const std::filesystem::path& path, const std::string& data) 
     } else if (keyword == "property") {
       std::string type, name, extra;
       const bool ok = vertex_seen && property < std::size(kProperties) && (words >> type >> name) &&
-                      !(words >> extra) && type == kProperties[property].first &&
-                      name == kProperties[property].second;
+                      !(words >> extra) && type == kProperties[property].first && name == kProperties[property].second;
       if (!ok)
         fail(path, "property line '" + line +
                        "': expected the vertex properties float x, y, z, uchar red, green, blue, label, float "

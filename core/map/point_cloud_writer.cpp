@@ -22,8 +22,8 @@ std::size_t write_labelled_point_cloud(const std::filesystem::path& ply_path, co
   std::ostringstream header;
   header << "ply\nformat binary_little_endian 1.0\ncomment facadeslam labelled map points\n";
   for (const auto& c : kSemanticClasses)
-    header << "comment class " << int(c.id) << ' ' << c.name << ' ' << int(c.r) << ' ' << int(c.g) << ' '
-           << int(c.b) << '\n';
+    header << "comment class " << int(c.id) << ' ' << c.name << ' ' << int(c.r) << ' ' << int(c.g) << ' ' << int(c.b)
+           << '\n';
   header << "comment class " << int(kUnlabelledClass.id) << ' ' << kUnlabelledClass.name << ' '
          << int(kUnlabelledClass.r) << ' ' << int(kUnlabelledClass.g) << ' ' << int(kUnlabelledClass.b) << '\n';
   header << "element vertex " << vertices.size() << '\n'

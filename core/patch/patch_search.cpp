@@ -14,7 +14,7 @@
 namespace facadeslam::patch {
 namespace {
 
-constexpr int kFirst = kPatchFirstOffset;            // -4
+constexpr int kFirst = kPatchFirstOffset;                  // -4
 constexpr int kLast = kPatchFirstOffset + kPatchSize - 1;  // +3
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
@@ -126,8 +126,7 @@ void sample_block(const cv::Mat& image, int ix, int iy, float ax, float ay, floa
 #else
   for (int r = 0; r < kPatchSize; ++r, p0 += step, out += kPatchSize) {
     const std::uint8_t* p1 = p0 + step;
-    for (int c = 0; c < kPatchSize; ++c)
-      out[c] = w00 * p0[c] + w01 * p0[c + 1] + w10 * p1[c] + w11 * p1[c + 1];
+    for (int c = 0; c < kPatchSize; ++c) out[c] = w00 * p0[c] + w01 * p0[c + 1] + w10 * p1[c] + w11 * p1[c + 1];
   }
 #endif
 }
@@ -178,8 +177,7 @@ inline int floor_to_int(double v) {
 
 // Whether the bilinear 8x8 block around the integer base (ix, iy) is inside.
 bool block_inside(const cv::Mat& image, int ix, int iy) {
-  return ix + kFirst >= 0 && iy + kFirst >= 0 && ix + kLast + 1 <= image.cols - 1 &&
-         iy + kLast + 1 <= image.rows - 1;
+  return ix + kFirst >= 0 && iy + kFirst >= 0 && ix + kLast + 1 <= image.cols - 1 && iy + kLast + 1 <= image.rows - 1;
 }
 
 }  // namespace
@@ -345,7 +343,7 @@ PatchSearchResult search_rows(const PatchTemplate& tpl, const ImagePyramid& pyra
     const double dy = y - p.y();
     const double room = r2 - dy * dy;
     const std::uint8_t* top = data + static_cast<std::size_t>(y + kFirst) * step;
-    for (auto it = std::lower_bound(row.begin(), row.end(), x_lo, [](const Corner& c, int x) { return c.x < x; });
+    for (auto it = std::lower_bound(row.begin(), row.end(), x_lo, [](const Corner&c, int x) { return c.x < x; });
          it != row.end() && it->x <= x_hi; ++it) {
       const double dx = it->x - p.x();
       if (dx * dx > room) continue;
@@ -409,21 +407,18 @@ PatchSearchResult search_rows(const PatchTemplate& tpl, const ImagePyramid& pyra
 }  // namespace
 
 PatchSearchResult search_patch(const PatchTemplate& tpl, const SearchImage& frame,
-                               const Eigen::Vector2d& predicted_level0, double radius,
-                               const SearchOptions& options) {
+                               const Eigen::Vector2d& predicted_level0, double radius, const SearchOptions& options) {
   const int level = tpl.search_level;
   return search_rows(tpl, frame.pyramid(), predicted_level0, radius, options,
                      [&](int y) { return frame.row(level, y); });
 }
 
 PatchSearchResult search_patch(const PatchTemplate& tpl, const ImagePyramid& pyramid,
-                               const Eigen::Vector2d& predicted_level0, double radius,
-                               const SearchOptions& options) {
+                               const Eigen::Vector2d& predicted_level0, double radius, const SearchOptions& options) {
   // Without the row index: one binary search to the first row, then a cursor
   // that walks the sorted corners row by row.
-  if (!tpl.valid()) return search_rows(tpl, pyramid, predicted_level0, radius, options, [](int) {
-      return std::span<const Corner>();
-    });
+  if (!tpl.valid())
+    return search_rows(tpl, pyramid, predicted_level0, radius, options, [](int) { return std::span<const Corner>(); });
   const std::vector<Corner>& corners = pyramid.level(tpl.search_level).corners;
   auto cursor = corners.begin();
   bool started = false;

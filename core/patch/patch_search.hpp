@@ -38,11 +38,11 @@
 namespace facadeslam::patch {
 
 struct SearchOptions {
-  float max_zmssd_per_pixel = 500.f;  // PTAM's bound; accept ZMSSD <= 64 x this
-  bool subpixel = true;               // refine the best corner to sub-pixel
-  int max_subpixel_iterations = 10;   // PTAM: 10
-  float subpixel_convergence = 0.03f; // step length that counts as converged (PTAM: 0.03)
-  float max_subpixel_shift = 2.f;     // farthest the refinement may move from the corner
+  float max_zmssd_per_pixel = 500.f;   // PTAM's bound; accept ZMSSD <= 64 x this
+  bool subpixel = true;                // refine the best corner to sub-pixel
+  int max_subpixel_iterations = 10;    // PTAM: 10
+  float subpixel_convergence = 0.03f;  // step length that counts as converged (PTAM: 0.03)
+  float max_subpixel_shift = 2.f;      // farthest the refinement may move from the corner
   // When no FAST corner within the radius matches, every pixel within this
   // many search-level pixels of the prediction is scored (0: off, PTAM).
   int dense_radius = 0;
@@ -79,7 +79,7 @@ float zmssd_at_subpixel(const PatchTemplate& tpl, const cv::Mat& image, const Ei
 
 struct SubpixelResult {
   bool converged = false;
-  Eigen::Vector2d pixel{0, 0};  // refined position, pixels of `image`
+  Eigen::Vector2d pixel{0, 0};    // refined position, pixels of `image`
   float brightness_offset = 0.f;  // the image block's mean (grey levels)
   float gain = 1.f;               // the image block's contrast over the template's
   int iterations = 0;

@@ -24,10 +24,10 @@ inline constexpr int kPatchFirstOffset = -kPatchSize / 2;
 // Why a template could not be made (kValid when it could).
 enum class TemplateStatus : std::uint8_t {
   kValid,
-  kBehindCamera,    // the point is not in front of the current camera
-  kBadWarp,         // warp degenerate/mirrored, or its scale is outside the usable range
-  kOutsideSource,   // the warped patch leaves the source keyframe's image
-  kTextureless,     // too little intensity variance to match reliably
+  kBehindCamera,   // the point is not in front of the current camera
+  kBadWarp,        // warp degenerate/mirrored, or its scale is outside the usable range
+  kOutsideSource,  // the warped patch leaves the source keyframe's image
+  kTextureless,    // too little intensity variance to match reliably
 };
 
 const char* to_string(TemplateStatus status);
@@ -43,8 +43,8 @@ struct PatchTemplate {
   // Affine warp A: level-0 pixels of the CURRENT image per pixel step at the
   // SOURCE keyframe's level (columns: one source-level pixel right, down).
   Eigen::Matrix2d warp = Eigen::Matrix2d::Zero();
-  double warp_det = 0.0;         // det(A)
-  int search_level = -1;         // pyramid level of the current image to search
+  double warp_det = 0.0;               // det(A)
+  int search_level = -1;               // pyramid level of the current image to search
   Eigen::Vector2d source_pixel{0, 0};  // patch centre at the source level (source-level pixels)
   // Source-level pixels per search-level pixel: (A / 2^search_level)^-1.
   Eigen::Matrix2d search_to_source = Eigen::Matrix2d::Zero();

@@ -39,8 +39,7 @@ constexpr GridOffsets kGridOffsets = make_grid_offsets();
 // a time; the reads stay scalar (SSE2 has no gather) but take each pixel pair
 // as one 16-bit load. Pixel offsets are computed in float, exact while the
 // image holds fewer than 2^24 bytes (else the scalar path runs).
-void sample_grid(const cv::Mat& image, float cx, float cy, float m00, float m01, float m10, float m11,
-                 float* out) {
+void sample_grid(const cv::Mat& image, float cx, float cy, float m00, float m01, float m10, float m11, float* out) {
   const std::uint8_t* data = image.ptr<std::uint8_t>(0);
   const std::size_t step = image.step;
 #if defined(__SSE2__)

@@ -39,10 +39,10 @@
 namespace facadeslam::patch {
 
 struct TemplateOptions {
-  int max_search_level = 3;     // highest current-image level to search (<= 3)
-  double min_search_det = 0.25; // accepted det(A) / 4^l range after level choice
+  int max_search_level = 3;      // highest current-image level to search (<= 3)
+  double min_search_det = 0.25;  // accepted det(A) / 4^l range after level choice
   double max_search_det = 4.0;
-  float min_variance = 16.f;    // grey levels^2 per pixel (std dev 4)
+  float min_variance = 16.f;  // grey levels^2 per pixel (std dev 4)
 };
 
 // A = J_proj(p_c) R_c_w [right_w, down_w]; p_c is the point in the current

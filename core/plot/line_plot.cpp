@@ -116,8 +116,16 @@ struct LinePlot::Arrangement {
 cv::Scalar series_colour(std::size_t index) {
   // A colour-blind-friendly qualitative palette (Tableau 10), in BGR.
   static const std::array<cv::Scalar, 10> palette{{
-      {180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214}, {189, 103, 148},
-      {75, 86, 140}, {194, 119, 227}, {127, 127, 127}, {34, 189, 188}, {207, 190, 23},
+      {180, 119, 31},
+      {14, 127, 255},
+      {44, 160, 44},
+      {40, 39, 214},
+      {189, 103, 148},
+      {75, 86, 140},
+      {194, 119, 227},
+      {127, 127, 127},
+      {34, 189, 188},
+      {207, 190, 23},
   }};
   return palette[index % palette.size()];
 }
@@ -316,7 +324,8 @@ cv::Mat LinePlot::render() const {
       }
       const cv::Point p = fixed(px(s.x[i]), py(s.y[i])) - origin;
       run.push_back(p);
-      if (s.style.markers) cv::circle(canvas, p, static_cast<int>(3.5 * kSubpixel), s.colour, cv::FILLED, cv::LINE_AA, kShift);
+      if (s.style.markers)
+        cv::circle(canvas, p, static_cast<int>(3.5 * kSubpixel), s.colour, cv::FILLED, cv::LINE_AA, kShift);
     }
     flush();
   }
@@ -332,7 +341,8 @@ cv::Mat LinePlot::render() const {
       if (s.name.empty()) continue;
       const int mid_y = box.y + kPad / 2 + row * kLegendRow + kLegendRow / 2;
       const cv::Point a0(box.x + kPad, mid_y), a1(box.x + kPad + kLegendSample, mid_y);
-      if (s.style.line || !s.style.markers) cv::line(image, a0, a1, s.colour, std::max(3, s.style.thickness), cv::LINE_AA);
+      if (s.style.line || !s.style.markers)
+        cv::line(image, a0, a1, s.colour, std::max(3, s.style.thickness), cv::LINE_AA);
       if (s.style.markers) cv::circle(image, (a0 + a1) / 2, 4, s.colour, cv::FILLED, cv::LINE_AA);
       const cv::Size size = text_size(s.name, kLabelScale);
       put_text(image, s.name, {a1.x + 8, mid_y - size.height / 2}, kLabelScale);

@@ -16,10 +16,10 @@
 namespace facadeslam::plot {
 
 struct SeriesStyle {
-  bool line = true;                   // join the points
-  bool markers = false;               // draw a dot at each point
-  std::optional<cv::Scalar> colour;   // BGR; default: the palette colour of the series index
-  int thickness = 2;                  // line thickness in pixels
+  bool line = true;                  // join the points
+  bool markers = false;              // draw a dot at each point
+  std::optional<cv::Scalar> colour;  // BGR; default: the palette colour of the series index
+  int thickness = 2;                 // line thickness in pixels
 };
 
 // The palette colour (BGR) of the series with this index; ten distinct

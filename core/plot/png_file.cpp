@@ -20,8 +20,7 @@ void save_png(const std::filesystem::path& path, const cv::Mat& image, const std
   if (extension != ".png") fail_file(path, "expected a file name ending in .png for the picture");
   std::vector<unsigned char> encoded;
   try {
-    if (!cv::imencode(".png", image, encoded, parameters))
-      fail_file(path, "cannot encode the PNG picture");
+    if (!cv::imencode(".png", image, encoded, parameters)) fail_file(path, "cannot encode the PNG picture");
   } catch (const cv::Exception& e) {
     fail_file(path, "cannot encode the PNG picture (" + e.err + ")");
   }

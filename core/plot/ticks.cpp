@@ -17,13 +17,19 @@ double nice_number(double x, bool round) {
   const double fraction = x / power;
   double nice = 10.0;
   if (round) {
-    if (fraction < 1.5) nice = 1.0;
-    else if (fraction < 3.0) nice = 2.0;
-    else if (fraction < 7.0) nice = 5.0;
+    if (fraction < 1.5)
+      nice = 1.0;
+    else if (fraction < 3.0)
+      nice = 2.0;
+    else if (fraction < 7.0)
+      nice = 5.0;
   } else {
-    if (fraction <= 1.0) nice = 1.0;
-    else if (fraction <= 2.0) nice = 2.0;
-    else if (fraction <= 5.0) nice = 5.0;
+    if (fraction <= 1.0)
+      nice = 1.0;
+    else if (fraction <= 2.0)
+      nice = 2.0;
+    else if (fraction <= 5.0)
+      nice = 5.0;
   }
   return nice * power;
 }
@@ -32,8 +38,8 @@ double nice_number(double x, bool round) {
 
 AxisTicks nice_ticks(double lo, double hi, int target_count) {
   if (!std::isfinite(lo) || !std::isfinite(hi))
-    throw Error("plot axis: the data range must be finite, got [" + std::to_string(lo) + ", " +
-                std::to_string(hi) + "]");
+    throw Error("plot axis: the data range must be finite, got [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                "]");
   if (target_count < 2) throw Error("plot axis: expected at least 2 ticks, got " + std::to_string(target_count));
   if (hi < lo) std::swap(lo, hi);
   // A single value (a constant series) still gets an axis around it.

@@ -7,9 +7,9 @@
 namespace facadeslam::plot {
 
 struct AxisTicks {
-  double lo = 0.0;    // first tick, <= the data minimum
-  double hi = 1.0;    // last tick, >= the data maximum
-  double step = 0.2;  // distance between ticks
+  double lo = 0.0;             // first tick, <= the data minimum
+  double hi = 1.0;             // last tick, >= the data maximum
+  double step = 0.2;           // distance between ticks
   std::vector<double> values;  // lo, lo + step, ..., hi
 };
 

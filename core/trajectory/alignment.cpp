@@ -29,14 +29,13 @@ bool spans_a_plane(const std::vector<Eigen::Vector3d>& points, const Eigen::Vect
 
 }  // namespace
 
-Sim3Alignment umeyama_alignment(const std::vector<Eigen::Vector3d>& source,
-                                const std::vector<Eigen::Vector3d>& target, bool with_scale) {
+Sim3Alignment umeyama_alignment(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
+                                bool with_scale) {
   if (source.size() != target.size())
-    throw Error("trajectory alignment: the point sets differ in size (" + std::to_string(source.size()) +
-                " vs " + std::to_string(target.size()) + ")");
+    throw Error("trajectory alignment: the point sets differ in size (" + std::to_string(source.size()) + " vs " +
+                std::to_string(target.size()) + ")");
   if (source.size() < 3)
-    throw Error("trajectory alignment needs at least 3 associated pose pairs, got " +
-                std::to_string(source.size()));
+    throw Error("trajectory alignment needs at least 3 associated pose pairs, got " + std::to_string(source.size()));
 
   const Eigen::Vector3d mu_source = mean_of(source);
   const Eigen::Vector3d mu_target = mean_of(target);
@@ -47,7 +46,7 @@ Sim3Alignment umeyama_alignment(const std::vector<Eigen::Vector3d>& source,
 
   const double n = static_cast<double>(source.size());
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // (1/n) sum (y - mu_y)(x - mu_x)^T
-  double source_variance = 0.0;                           // (1/n) sum |x - mu_x|^2
+  double source_variance = 0.0;                          // (1/n) sum |x - mu_x|^2
   for (std::size_t i = 0; i < source.size(); ++i) {
     const Eigen::Vector3d x = source[i] - mu_source;
     const Eigen::Vector3d y = target[i] - mu_target;

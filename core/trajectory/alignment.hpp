@@ -33,7 +33,7 @@ struct Sim3Alignment {
 // target ≈ scale * R * source + t. With `with_scale` false the scale is 1.
 // Throws Error when the problem has no unique answer: different lengths, fewer
 // than 3 pairs, or points that are (nearly) all on one line or one point.
-Sim3Alignment umeyama_alignment(const std::vector<Eigen::Vector3d>& source,
-                                const std::vector<Eigen::Vector3d>& target, bool with_scale);
+Sim3Alignment umeyama_alignment(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
+                                bool with_scale);
 
 }  // namespace facadeslam

@@ -14,14 +14,13 @@ std::vector<double> distances_along(const std::vector<Eigen::Isometry3d>& T_w_c)
   std::vector<double> distances;
   distances.reserve(T_w_c.size());
   for (std::size_t i = 0; i < T_w_c.size(); ++i)
-    distances.push_back(i == 0 ? 0.0
-                               : distances.back() + (T_w_c[i].translation() - T_w_c[i - 1].translation()).norm());
+    distances.push_back(i == 0 ? 0.0 : distances.back() + (T_w_c[i].translation() - T_w_c[i - 1].translation()).norm());
   return distances;
 }
 
 struct SegmentSums {
   std::size_t pairs = 0;
-  double translation_ratio = 0.0;  // sum of |t_E| / L
+  double translation_ratio = 0.0;   // sum of |t_E| / L
   double rotation_deg_per_m = 0.0;  // sum of angle(R_E) / L
 };
 

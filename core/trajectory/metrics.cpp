@@ -75,8 +75,7 @@ TrajectoryEvaluation evaluate_trajectory(const Trajectory& gt, const Trajectory&
     result.gt_positions.push_back(gt[p.gt_index].T_w_c.translation());
     est_positions.push_back(est[p.est_index].T_w_c.translation());
   }
-  result.alignment = umeyama_alignment(est_positions, result.gt_positions,
-                                       options.alignment == AlignmentMode::sim3);
+  result.alignment = umeyama_alignment(est_positions, result.gt_positions, options.alignment == AlignmentMode::sim3);
   result.scale = result.alignment.scale;
 
   // ATE
@@ -112,8 +111,7 @@ TrajectoryEvaluation evaluate_trajectory(const Trajectory& gt, const Trajectory&
   for (const auto& p : pairs) gt_indices.push_back(p.gt_index);
   std::sort(gt_indices.begin(), gt_indices.end());
   for (std::size_t k = 1; k < gt_indices.size(); ++k)
-    result.path_length_m +=
-        (gt[gt_indices[k]].T_w_c.translation() - gt[gt_indices[k - 1]].T_w_c.translation()).norm();
+    result.path_length_m += (gt[gt_indices[k]].T_w_c.translation() - gt[gt_indices[k - 1]].T_w_c.translation()).norm();
   result.ate_percent_of_path = result.path_length_m > 0.0 ? 100.0 * result.ate_rmse_m / result.path_length_m
                                                           : std::numeric_limits<double>::quiet_NaN();
   return result;

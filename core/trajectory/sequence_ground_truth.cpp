@@ -16,7 +16,8 @@ SequenceGroundTruth::SequenceGroundTruth(const std::filesystem::path& path)
 void SequenceGroundTruth::require_frames_up_to(std::size_t last_index) const {
   if (format_ != TrajectoryFormat::kitti || last_index < poses_.size()) return;
   fail_file(path_, "has " + std::to_string(poses_.size()) + " poses but the sequence has frame " +
-                       std::to_string(last_index) + " (counted from 0; expected a KITTI pose file with line i "
+                       std::to_string(last_index) +
+                       " (counted from 0; expected a KITTI pose file with line i "
                        "for frame i of the sequence)");
 }
 

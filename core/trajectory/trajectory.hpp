@@ -8,7 +8,7 @@
 namespace facadeslam {
 
 struct StampedPose {
-  double timestamp = 0.0;  // seconds
+  double timestamp = 0.0;                                   // seconds
   Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();  // camera -> world
 };
 

@@ -66,18 +66,15 @@ std::optional<double> parse_finite(std::string_view word) {
   return value;
 }
 
-std::vector<double> parse_numbers(const std::filesystem::path& path, const WordLine& line,
-                                  std::size_t count, std::string_view expectation) {
+std::vector<double> parse_numbers(const std::filesystem::path& path, const WordLine& line, std::size_t count,
+                                  std::string_view expectation) {
   if (line.words.size() != count)
-    fail_line(path, line.line_number,
-              std::string(expectation) + ", got " + std::to_string(line.words.size()));
+    fail_line(path, line.line_number, std::string(expectation) + ", got " + std::to_string(line.words.size()));
   std::vector<double> values;
   values.reserve(count);
   for (const auto& word : line.words) {
     const auto value = parse_finite(word);
-    if (!value)
-      fail_line(path, line.line_number,
-                std::string(expectation) + "; '" + word + "' is not a finite number");
+    if (!value) fail_line(path, line.line_number, std::string(expectation) + "; '" + word + "' is not a finite number");
     values.push_back(*value);
   }
   return values;
@@ -90,8 +87,8 @@ void require_non_decreasing(const std::filesystem::path& path, std::size_t line_
                             double current) {
   if (current >= previous) return;
   char buf[160];
-  std::snprintf(buf, sizeof buf, "timestamp %.9f is smaller than the previous one (%.9f); expected time order",
-                current, previous);
+  std::snprintf(buf, sizeof buf, "timestamp %.9f is smaller than the previous one (%.9f); expected time order", current,
+                previous);
   fail_line(path, line_number, buf);
 }
 
@@ -157,9 +154,8 @@ std::vector<double> read_times(const std::filesystem::path& times_path, std::siz
                                const std::filesystem::path& trajectory_path) {
   const auto lines = read_word_lines(times_path, "a times file, one timestamp per line");
   if (lines.size() != pose_count)
-    fail_file(times_path, "has " + std::to_string(lines.size()) + " timestamps but " +
-                              trajectory_path.string() + " has " + std::to_string(pose_count) +
-                              " poses (expected one timestamp per pose)");
+    fail_file(times_path, "has " + std::to_string(lines.size()) + " timestamps but " + trajectory_path.string() +
+                              " has " + std::to_string(pose_count) + " poses (expected one timestamp per pose)");
   std::vector<double> times;
   times.reserve(lines.size());
   for (const auto& line : lines) {
@@ -246,8 +242,8 @@ void write_tum_trajectory(const std::filesystem::path& path, const Trajectory& t
     for (const auto& pose : trajectory) {
       const Eigen::Vector3d t = pose.T_w_c.translation();
       const Eigen::Quaterniond q(pose.T_w_c.linear());
-      std::snprintf(buf, sizeof buf, "%.9f %.15g %.15g %.15g %.15g %.15g %.15g %.15g\n", pose.timestamp,
-                    t.x(), t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
+      std::snprintf(buf, sizeof buf, "%.9f %.15g %.15g %.15g %.15g %.15g %.15g %.15g\n", pose.timestamp, t.x(), t.y(),
+                    t.z(), q.x(), q.y(), q.z(), q.w());
       out << buf;
     }
   });

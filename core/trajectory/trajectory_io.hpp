@@ -31,8 +31,7 @@ std::string to_string(TrajectoryFormat format);
 // at i). Timestamps must not decrease (repeats are kept: real TUM ground
 // truth has them); an empty file is an error, and so is a rate that is
 // negative or not finite.
-Trajectory read_trajectory(const std::filesystem::path& path,
-                           TrajectoryFormat format = TrajectoryFormat::auto_detect,
+Trajectory read_trajectory(const std::filesystem::path& path, TrajectoryFormat format = TrajectoryFormat::auto_detect,
                            const std::filesystem::path& times_path = {}, double rate_hz = 0.0);
 
 // TUM or KITTI, by the number of columns of the first pose line (8 or 12).

@@ -63,8 +63,7 @@ void write_file_atomically(const std::filesystem::path& path,
   commit(tmp, path);
 }
 
-void write_atomically(const std::filesystem::path& path,
-                      const std::function<void(std::ostream&)>& write, bool binary) {
+void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write, bool binary) {
   write_file_atomically(path, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, binary ? std::ios::binary | std::ios::out : std::ios::out);
     if (!out) fail_file(path, "cannot open for writing");

@@ -12,8 +12,7 @@ namespace facadeslam {
 // then renames it onto `path`. If `write` throws, or the stream fails, the
 // temporary file is removed, `path` is untouched and an Error names the file.
 // Creates the parent folder if needed.
-void write_atomically(const std::filesystem::path& path,
-                      const std::function<void(std::ostream&)>& write,
+void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
                       bool binary = false);
 
 void write_text_atomically(const std::filesystem::path& path, std::string_view text);

@@ -22,8 +22,7 @@ std::size_t ByteReader::count(const char* what, std::size_t item_bytes, std::siz
   const std::size_t n = get<std::uint32_t>(what);
   if (n > max) fail(std::string(what) + " is " + std::to_string(n) + ", expected at most " + std::to_string(max));
   if (item_bytes > 0 && n > remaining() / item_bytes)
-    fail(std::string(what) + " is " + std::to_string(n) + " but only " + std::to_string(remaining()) +
-         " bytes follow");
+    fail(std::string(what) + " is " + std::to_string(n) + " but only " + std::to_string(remaining()) + " bytes follow");
   return n;
 }
 

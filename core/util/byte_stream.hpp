@@ -22,10 +22,8 @@ static_assert(std::endian::native == std::endian::little, "the binary formats as
 class ByteWriter {
  public:
   template <class T>
-    requires std::is_arithmetic_v<T>
-  void put(T value) {
-    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
-  }
+  requires std::is_arithmetic_v<T>
+  void put(T value) { bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T)); }
   void put_bytes(const void* data, std::size_t size) { bytes_.append(static_cast<const char*>(data), size); }
   // A 32-bit length, then the characters.
   void put_text(std::string_view text);
@@ -44,8 +42,7 @@ class ByteReader {
       : bytes_(bytes), file_(std::move(file)), damaged_(std::move(damaged)) {}
 
   template <class T>
-    requires std::is_arithmetic_v<T>
-  T get(const char* what) {
+  requires std::is_arithmetic_v<T> T get(const char* what) {
     T value;
     std::memcpy(&value, take(sizeof(T), what), sizeof(T));
     return value;

@@ -26,7 +26,8 @@ void require_confined(const std::filesystem::path& path, const std::filesystem::
   std::string what = line > 0 ? "line " + std::to_string(line) + ": " : std::string();
   what.append(quoted_for_message(as_written)).append(" leads outside ");
   what.append(folder.empty() ? std::string(".") : folder.string());
-  fail_file(listed_in, what.append(" (paths in it must stay inside its folder; pass --allow-outside-paths to read it)"));
+  fail_file(listed_in,
+            what.append(" (paths in it must stay inside its folder; pass --allow-outside-paths to read it)"));
 }
 
 }  // namespace facadeslam

@@ -54,9 +54,11 @@ OutputLock::OutputLock(const fs::path& target) : lock_file_(output_lock_file(tar
         fail_file(target, "another facadeslam run" + (pid.empty() ? std::string() : " (process " + pid + ")") +
                               " is writing this output now (" + lock_file_.filename().string() +
                               "); wait for it to end or choose another output");
-      fail_file(target, std::string("cannot lock ") + lock_file_.filename().string() + " (" + std::strerror(error) + ")");
+      fail_file(target,
+                std::string("cannot lock ") + lock_file_.filename().string() + " (" + std::strerror(error) + ")");
     }
-    struct stat opened {}, at_path {};
+    struct stat opened {
+    }, at_path{};
     if (::fstat(fd, &opened) == 0 && ::lstat(lock_file_.c_str(), &at_path) == 0 && opened.st_ino == at_path.st_ino &&
         opened.st_dev == at_path.st_dev) {
       const std::string pid = std::to_string(::getpid()) + "\n";

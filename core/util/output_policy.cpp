@@ -84,9 +84,8 @@ bool same_kind(const OutputFileKind& a, const OutputFileKind& b) { return a.desc
 }  // namespace
 
 OutputFileKind file_starting_with(std::string description, std::string prefix) {
-  return {std::move(description), [prefix = std::move(prefix)](const fs::path& path) {
-            return file_head(path, prefix.size()) == prefix;
-          }};
+  return {std::move(description),
+          [prefix = std::move(prefix)](const fs::path& path) { return file_head(path, prefix.size()) == prefix; }};
 }
 
 OutputFileKind png_file(std::string description) {
@@ -241,8 +240,8 @@ void OutputPlan::check_against_outputs(const Output& output, std::size_t index) 
       }
       if (!last) layout = entry->folder.get();
     }
-    const bool kind_fits = output.layout ? entry->folder == output.layout
-                                         : !entry->folder && same_kind(entry->file, output.kind);
+    const bool kind_fits =
+        output.layout ? entry->folder == output.layout : !entry->folder && same_kind(entry->file, output.kind);
     if (entry->every_run || !kind_fits)
       fail_file(output.path, output.option + " is where " + other.option + " puts " + what_entry_holds(*entry) +
                                  ": give another name");
@@ -261,8 +260,10 @@ void OutputPlan::check_existing(const Output& output) {
   if (output.layout) {
     if (!fs::is_directory(status)) fail_file(output.path, output.option + " is an output folder, but it is a file");
     if (const std::string foreign = foreign_entry(output.path, *output.layout); !foreign.empty())
-      fail_file(output.path, output.option + " holds " + foreign + "; a run replaces the folder as a whole, so it "
-                                 "must be new, empty or " + output.layout->description);
+      fail_file(output.path, output.option + " holds " + foreign +
+                                 "; a run replaces the folder as a whole, so it "
+                                 "must be new, empty or " +
+                                 output.layout->description);
     return;
   }
   if (fs::is_directory(status)) fail_file(output.path, output.option + " is a folder (expected an output file name)");

@@ -63,7 +63,7 @@ struct OutputFolderEntry {
 };
 
 struct OutputFolderLayout {
-  std::string description;  // "an earlier replay output"
+  std::string description;                 // "an earlier replay output"
   std::vector<OutputFolderEntry> entries;  // the first match decides
 };
 

@@ -10,13 +10,10 @@ namespace {
 thread_local bool silenced_on_this_thread = false;
 }  // namespace
 
-
 bool Progress::terminal_attached() { return ::isatty(STDOUT_FILENO) && ::isatty(STDERR_FILENO); }
 
 Progress::Progress(std::string label, std::size_t total)
-    : label_(std::move(label)),
-      total_(total),
-      enabled_(drawing_enabled()) {}
+    : label_(std::move(label)), total_(total), enabled_(drawing_enabled()) {}
 
 bool Progress::drawing_enabled() {
   return terminal_attached() && current_verbosity() != Verbosity::quiet && !silenced_on_this_thread;
@@ -49,14 +46,14 @@ void Progress::draw(const std::string& status) {
   std::string eta;
   if (rate > 0 && done_ < total_) {
     const auto left = static_cast<long>(static_cast<double>(total_ - done_) / rate + 0.5);
-    eta = left >= 3600   ? " ETA " + std::to_string(left / 3600) + "h" + std::to_string(left % 3600 / 60) + "m"
-          : left >= 60   ? " ETA " + std::to_string(left / 60) + "m" + std::to_string(left % 60) + "s"
-                         : " ETA " + std::to_string(left) + "s";
+    eta = left >= 3600 ? " ETA " + std::to_string(left / 3600) + "h" + std::to_string(left % 3600 / 60) + "m"
+          : left >= 60 ? " ETA " + std::to_string(left / 60) + "m" + std::to_string(left % 60) + "s"
+                       : " ETA " + std::to_string(left) + "s";
   }
   std::fprintf(stderr, "\r%s [%s%s] %zu/%zu %.1f/s%s %s\x1b[K", label_.c_str(),
                std::string(static_cast<std::size_t>(filled), '#').c_str(),
-               std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), done_, total_,
-               rate, eta.c_str(), status.c_str());
+               std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), done_, total_, rate, eta.c_str(),
+               status.c_str());
   std::fflush(stderr);
 }
 

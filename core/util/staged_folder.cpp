@@ -50,8 +50,8 @@ fs::path remove_stale_siblings(const fs::path& target, const StagedFolderStart& 
       stale.push_back(it->path());
     }
     for (const fs::path& path : stale) {
-      const bool candidate = std::string(infix) == ".tmp-" && start.from_target && start.abandoned_is_newer &&
-                             fs::is_directory(path, ec);
+      const bool candidate =
+          std::string(infix) == ".tmp-" && start.from_target && start.abandoned_is_newer && fs::is_directory(path, ec);
       if (candidate && start.abandoned_is_newer(path, kept.empty() ? target : kept)) {
         if (!kept.empty()) fs::remove_all(kept, ec);
         kept = path;
@@ -96,7 +96,8 @@ StagedFolder::StagedFolder(fs::path target, const StagedFolderStart& start) {
   if (target_.has_filename() == false) target_ = target_.parent_path();
   if (ec || target_.filename().empty() || target_ == target_.root_path())
     fail_file(target, "expected an output folder that can be replaced as a whole, not the file system root");
-  if (fs::exists(target_, ec) && !fs::is_directory(target_, ec)) fail_file(target, "an output folder, but it is a file");
+  if (fs::exists(target_, ec) && !fs::is_directory(target_, ec))
+    fail_file(target, "an output folder, but it is a file");
   // The ancestors that do not exist yet are made now and removed again if
   // the run fails.
   fs::path first_missing;

@@ -41,11 +41,11 @@ struct BaPoint {
 };
 
 struct BaObservation {
-  std::size_t keyframe = 0;      // index into BaProblem::keyframes
-  std::size_t point = 0;         // index into BaProblem::points
-  Eigen::Vector2d pixel{0, 0};   // measured position in LEVEL-0 pixels
-  int level = 0;                 // pyramid level it was found at: sigma = 2^level px
-  double weight = 1.0;           // its share of the cost (the loss times this), in (0, 1]
+  std::size_t keyframe = 0;     // index into BaProblem::keyframes
+  std::size_t point = 0;        // index into BaProblem::points
+  Eigen::Vector2d pixel{0, 0};  // measured position in LEVEL-0 pixels
+  int level = 0;                // pyramid level it was found at: sigma = 2^level px
+  double weight = 1.0;          // its share of the cost (the loss times this), in (0, 1]
 };
 
 // Keeps |centre(keyframes[keyframe]) - centre(keyframes[reference])| at its

@@ -23,7 +23,7 @@ void check_observations(const std::set<std::uint64_t>& ids, const std::vector<Ob
   for (const ObservationRef& obs : observations)
     if (!ids.contains(obs.keyframe_id))
       fail_selection("an observation of point " + std::to_string(obs.point_id) + " names keyframe id " +
-           std::to_string(obs.keyframe_id) + ", which is not among the keyframes");
+                     std::to_string(obs.keyframe_id) + ", which is not among the keyframes");
 }
 
 }  // namespace
@@ -37,7 +37,8 @@ BaSelection local_ba_selection(const std::vector<KeyFrameCentre>& keyframes,
     if (!kf.centre_w.allFinite()) fail_selection("keyframe id " + std::to_string(kf.id) + " has a non-finite centre");
   const auto newest_it =
       std::find_if(keyframes.begin(), keyframes.end(), [&](const KeyFrameCentre& kf) { return kf.id == newest; });
-  if (newest_it == keyframes.end()) fail_selection("the newest keyframe id " + std::to_string(newest) + " is not among the keyframes");
+  if (newest_it == keyframes.end())
+    fail_selection("the newest keyframe id " + std::to_string(newest) + " is not among the keyframes");
   const std::uint64_t gauge = *ids.begin();
 
   BaSelection selection;

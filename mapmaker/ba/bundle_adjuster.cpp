@@ -103,7 +103,7 @@ ErrorSummary measure_errors(const BaProblem& problem, const Camera& camera, doub
 struct ParameterBlocks {
   std::vector<PoseBlock> poses;
   std::vector<PointBlock> points;
-  std::vector<char> pose_used;   // appears in a residual
+  std::vector<char> pose_used;  // appears in a residual
   std::vector<char> point_used;
 
   explicit ParameterBlocks(const BaProblem& problem)
@@ -149,9 +149,8 @@ ceres::LinearSolverType choose_linear_solver(const BundleAdjusterOptions& option
     case BaLinearSolver::automatic: break;
   }
   return free_keyframes <= static_cast<std::size_t>(options.dense_schur_max_free_keyframes) ? ceres::DENSE_SCHUR
-                                                                                          : ceres::SPARSE_SCHUR;
+                                                                                            : ceres::SPARSE_SCHUR;
 }
-
 
 }  // namespace
 
@@ -194,7 +193,8 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem ceres_problem(problem_options);
-  camera.visit([&](const auto& model) { add_residuals(ceres_problem, problem, model, loss.get(), blocks, scaled_losses); });
+  camera.visit(
+      [&](const auto& model) { add_residuals(ceres_problem, problem, model, loss.get(), blocks, scaled_losses); });
 
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   for (std::size_t i = 0; i < problem.points.size(); ++i) {
@@ -216,7 +216,8 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
     }
     ++result.free_keyframes;
     if (problem.scale_anchor && problem.scale_anchor->keyframe == i) {
-      const Eigen::Vector3d reference = problem.keyframes[problem.scale_anchor->reference].T_c_w.inverse().translation();
+      const Eigen::Vector3d reference =
+          problem.keyframes[problem.scale_anchor->reference].T_c_w.inverse().translation();
       const Eigen::Vector3d centre = problem.keyframes[i].T_c_w.inverse().translation();
       anchor_manifold = make_centre_distance_manifold(reference, (centre - reference).norm());
       ceres_problem.SetManifold(block, anchor_manifold.get());
@@ -231,7 +232,8 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
   solver_options.minimizer_type = ceres::TRUST_REGION;
   solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   solver_options.linear_solver_type = choose_linear_solver(options_, result.free_keyframes, result.free_points);
-  if (solver_options.linear_solver_type == ceres::DENSE_SCHUR || solver_options.linear_solver_type == ceres::SPARSE_SCHUR)
+  if (solver_options.linear_solver_type == ceres::DENSE_SCHUR ||
+      solver_options.linear_solver_type == ceres::SPARSE_SCHUR)
     solver_options.linear_solver_ordering = ordering;
   if (!ceres::IsSparseLinearAlgebraLibraryTypeAvailable(ceres::SUITE_SPARSE))
     solver_options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
@@ -266,11 +268,11 @@ BaResult BundleAdjuster::solve(BaProblem& problem, const Camera& camera) const {
   result.outliers = final_errors.outliers;
   result.solver_report = summary.BriefReport();
   result.time_ms = start.elapsed_ms();
-  spdlog::debug("bundle adjustment: {} free keyframes, {} free points, {} observations, {} iterations, "
-                "RMS {:.3f} -> {:.3f} px, {} outliers, {:.1f} ms{}",
-                result.free_keyframes, result.free_points, problem.observations.size(), result.iterations,
-                result.initial_rms_px, result.final_rms_px, result.outliers.size(), result.time_ms,
-                result.aborted ? " (aborted)" : "");
+  spdlog::debug(
+      "bundle adjustment: {} free keyframes, {} free points, {} observations, {} iterations, "
+      "RMS {:.3f} -> {:.3f} px, {} outliers, {:.1f} ms{}",
+      result.free_keyframes, result.free_points, problem.observations.size(), result.iterations, result.initial_rms_px,
+      result.final_rms_px, result.outliers.size(), result.time_ms, result.aborted ? " (aborted)" : "");
   return result;
 }
 

@@ -52,13 +52,13 @@ enum class BaLoss {
 };
 
 enum class BaLinearSolver {
-  automatic,     // dense_schur up to dense_schur_max_free_keyframes, else sparse_schur
+  automatic,  // dense_schur up to dense_schur_max_free_keyframes, else sparse_schur
   dense_schur,
   sparse_schur,  // SuiteSparse (Eigen's sparse Cholesky if Ceres lacks it)
 };
 
 struct BundleAdjusterOptions {
-  int max_iterations = 20;           // Levenberg–Marquardt iterations, >= 0
+  int max_iterations = 20;  // Levenberg–Marquardt iterations, >= 0
   BaLoss loss = BaLoss::cauchy;
   // The loss's scale in whitened units (multiples of the observation's
   // sigma = 2^level px): residual norms up to about this are inliers.
@@ -92,13 +92,13 @@ struct BundleAdjusterOptions {
 };
 
 struct BaResult {
-  bool converged = false;    // a Ceres tolerance was met (not: ran out of iterations, aborted)
-  bool aborted = false;      // stopped by the abort flag
-  int iterations = 0;        // Levenberg–Marquardt iterations run (accepted or not)
+  bool converged = false;       // a Ceres tolerance was met (not: ran out of iterations, aborted)
+  bool aborted = false;         // stopped by the abort flag
+  int iterations = 0;           // Levenberg–Marquardt iterations run (accepted or not)
   double initial_rms_px = 0.0;  // sqrt(mean |project - pixel|^2) over all observations, level-0 px
   double final_rms_px = 0.0;
-  double final_inlier_rms_px = 0.0;  // the same over the observations not reported as outliers
-  double time_ms = 0.0;      // wall time of solve(), including problem set-up
+  double final_inlier_rms_px = 0.0;   // the same over the observations not reported as outliers
+  double time_ms = 0.0;               // wall time of solve(), including problem set-up
   std::vector<std::size_t> outliers;  // indices into BaProblem::observations, ascending
   std::size_t free_keyframes = 0;     // blocks optimised (taking part and not fixed)
   std::size_t free_points = 0;

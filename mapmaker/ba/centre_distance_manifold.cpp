@@ -62,8 +62,7 @@ class CentreOnSphere {
   // Orthonormal basis of the plane orthogonal to v, built from the world
   // axis least aligned with v (a deterministic, well-conditioned choice).
   template <class T>
-  static void tangent_basis(const Eigen::Matrix<T, 3, 1>& v, Eigen::Matrix<T, 3, 1>& e1,
-                            Eigen::Matrix<T, 3, 1>& e2) {
+  static void tangent_basis(const Eigen::Matrix<T, 3, 1>& v, Eigen::Matrix<T, 3, 1>& e1, Eigen::Matrix<T, 3, 1>& e2) {
     using std::abs;
     using Vector3 = Eigen::Matrix<T, 3, 1>;
     const Vector3 n = v / v.norm();

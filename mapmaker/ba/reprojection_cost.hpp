@@ -77,8 +77,7 @@ template <class Model>
 template <class Model, class T>
 Eigen::Matrix<T, 2, 1> residual_in_camera(const Model& model, const Eigen::Matrix<T, 3, 1>& p_c,
                                           const Eigen::Vector2d& pixel, double inv_sigma) {
-  const Eigen::Vector3d value(ba_detail::value_of(p_c.x()), ba_detail::value_of(p_c.y()),
-                              ba_detail::value_of(p_c.z()));
+  const Eigen::Vector3d value(ba_detail::value_of(p_c.x()), ba_detail::value_of(p_c.y()), ba_detail::value_of(p_c.z()));
   if (value.z() >= min_field_depth(value)) [[likely]] {
     const Eigen::Matrix<T, 2, 1> px = model.project(p_c);
     return {(px.x() - pixel.x()) * inv_sigma, (px.y() - pixel.y()) * inv_sigma};
@@ -92,8 +91,8 @@ Eigen::Matrix<T, 2, 1> residual_in_camera(const Model& model, const Eigen::Matri
 // The whitened residual for any scalar type (double or ceres::Jet).
 template <class Model, class T>
 Eigen::Matrix<T, 2, 1> whitened_reprojection_residual(const Model& model, const SE3<T>& T_c_w,
-                                                      const Eigen::Matrix<T, 3, 1>& p_w,
-                                                      const Eigen::Vector2d& pixel, double inv_sigma) {
+                                                      const Eigen::Matrix<T, 3, 1>& p_w, const Eigen::Vector2d& pixel,
+                                                      double inv_sigma) {
   return residual_in_camera<Model, T>(model, T_c_w * p_w, pixel, inv_sigma);
 }
 

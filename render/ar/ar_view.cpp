@@ -206,8 +206,8 @@ struct ArView::Impl {
     }
 
     object_colour = make_texture(GL_LINEAR);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, object_camera.width, object_camera.height, 0, GL_RGBA,
-                  GL_UNSIGNED_BYTE, nullptr);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, object_camera.width, object_camera.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                  nullptr);
     gl.BindTexture(GL_TEXTURE_2D, 0);
     gl.GenRenderbuffers(1, &object_depth);
     gl.BindRenderbuffer(GL_RENDERBUFFER, object_depth);
@@ -317,8 +317,8 @@ struct ArView::Impl {
     gl.Uniform1f(object_program.uniform("squares"), static_cast<float>(object.checker_squares));
     gl.BindVertexArray(object_vao);
     gl.BindBuffer(GL_ARRAY_BUFFER, object_vbo);
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(ObjectGpuVertex)),
-                  vertices.data(), GL_STREAM_DRAW);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(ObjectGpuVertex)), vertices.data(),
+                  GL_STREAM_DRAW);
     gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
     gl.Disable(GL_DEPTH_TEST);
   }
@@ -329,8 +329,10 @@ struct ArView::Impl {
       throw Error("render: the AR view needs an 8-bit BGR or grey image of " + std::to_string(camera.width()) + "x" +
                   std::to_string(camera.height()) + " pixels, got " + std::to_string(image.cols) + "x" +
                   std::to_string(image.rows));
-    if (image.type() == CV_8UC1) cv::cvtColor(image, background_bgr, cv::COLOR_GRAY2BGR);
-    else if (!image.isContinuous()) background_bgr = image.clone();
+    if (image.type() == CV_8UC1)
+      cv::cvtColor(image, background_bgr, cv::COLOR_GRAY2BGR);
+    else if (!image.isContinuous())
+      background_bgr = image.clone();
     const cv::Mat& data = image.type() == CV_8UC3 && image.isContinuous() ? image : background_bgr;
     gl.ActiveTexture(GL_TEXTURE0);
     gl.BindTexture(GL_TEXTURE_2D, background_texture);
@@ -366,8 +368,8 @@ struct ArView::Impl {
     gl.Uniform1f(point_program.uniform("outline"), std::max(0.f, style.outline_pixels));
     gl.BindVertexArray(point_vao);
     gl.BindBuffer(GL_ARRAY_BUFFER, point_vbo);
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(PointGpuVertex)),
-                  vertices.data(), GL_STREAM_DRAW);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(PointGpuVertex)), vertices.data(),
+                  GL_STREAM_DRAW);
     gl.DrawArrays(GL_POINTS, 0, static_cast<GLsizei>(vertices.size()));
     return vertices.size();
   }

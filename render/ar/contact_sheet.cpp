@@ -32,14 +32,13 @@ cv::Mat FrameSampleSheet::image() const {
   // `tiles_` of the kept frames, evenly spread, first and last included.
   std::vector<const Tile*> chosen;
   const std::size_t n = std::min(tiles_, kept_.size());
-  for (std::size_t i = 0; i < n; ++i)
-    chosen.push_back(&kept_[n == 1 ? 0 : i * (kept_.size() - 1) / (n - 1)]);
+  for (std::size_t i = 0; i < n; ++i) chosen.push_back(&kept_[n == 1 ? 0 : i * (kept_.size() - 1) / (n - 1)]);
   const int tile_height = chosen.front()->thumbnail.rows;
   const int caption_height = 22, title_height = 34, gap = 6;
   const int columns = std::min<int>(columns_, static_cast<int>(chosen.size()));
   const int rows = (static_cast<int>(chosen.size()) + columns - 1) / columns;
-  cv::Mat sheet(title_height + rows * (tile_height + caption_height + gap) + gap,
-                columns * (tile_width_ + gap) + gap, CV_8UC3, cv::Scalar(40, 40, 40));
+  cv::Mat sheet(title_height + rows * (tile_height + caption_height + gap) + gap, columns * (tile_width_ + gap) + gap,
+                CV_8UC3, cv::Scalar(40, 40, 40));
   cv::putText(sheet, title_, {gap + 2, title_height - 11}, cv::FONT_HERSHEY_SIMPLEX, 0.7, cv::Scalar::all(235), 1,
               cv::LINE_AA);
   for (std::size_t i = 0; i < chosen.size(); ++i) {
@@ -49,8 +48,8 @@ cv::Mat FrameSampleSheet::image() const {
     const cv::Mat& thumbnail = chosen[i]->thumbnail;
     thumbnail(cv::Rect(0, 0, thumbnail.cols, std::min(thumbnail.rows, tile_height)))
         .copyTo(sheet(cv::Rect(x, y, thumbnail.cols, std::min(thumbnail.rows, tile_height))));
-    cv::putText(sheet, chosen[i]->caption, {x + 2, y + tile_height + caption_height - 7}, cv::FONT_HERSHEY_SIMPLEX,
-                0.5, cv::Scalar::all(220), 1, cv::LINE_AA);
+    cv::putText(sheet, chosen[i]->caption, {x + 2, y + tile_height + caption_height - 7}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
+                cv::Scalar::all(220), 1, cv::LINE_AA);
   }
   return sheet;
 }

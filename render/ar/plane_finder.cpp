@@ -31,8 +31,7 @@ Plane fit_plane(const std::vector<Eigen::Vector3d>& points_w, const std::vector<
   return plane;
 }
 
-std::vector<std::size_t> inliers_of(const std::vector<Eigen::Vector3d>& points_w, const Plane& plane,
-                                    double distance) {
+std::vector<std::size_t> inliers_of(const std::vector<Eigen::Vector3d>& points_w, const Plane& plane, double distance) {
   std::vector<std::size_t> inliers;
   for (std::size_t i = 0; i < points_w.size(); ++i)
     if (std::abs(plane.signed_distance(points_w[i])) <= distance) inliers.push_back(i);

@@ -13,7 +13,7 @@ namespace facadeslam::render::ar {
 
 struct Plane {
   Eigen::Vector3d normal_w = Eigen::Vector3d::UnitZ();  // unit
-  double offset = 0.0;                                   // normal_w . p + offset = 0 on the plane
+  double offset = 0.0;                                  // normal_w . p + offset = 0 on the plane
   double signed_distance(const Eigen::Vector3d& p_w) const { return normal_w.dot(p_w) + offset; }
 };
 

@@ -18,7 +18,7 @@ struct VirtualObject {
   // Object frame: origin at the centre of the face resting on the plane, z
   // along the plane's normal on the cameras' side, x and y in the plane.
   Eigen::Isometry3d T_w_o = Eigen::Isometry3d::Identity();
-  double size = 1.0;       // edge length, map units
+  double size = 1.0;  // edge length, map units
   // Per face edge; odd, so that every face has the body colour in all four
   // corners: at each corner of the cube three faces of one colour meet, and
   // their different shading makes the corner a clean junction.

@@ -41,7 +41,8 @@ FACADESLAM_KERNEL void sobel(const cv::Mat& padded, cv::Mat& smooth, cv::Mat& de
     short* gy = dy.ptr<short>(y);
     if constexpr (H == 1) {
       const short *s0 = smooth.ptr<short>(y), *s2 = smooth.ptr<short>(y + 2);
-      const short *d0 = derivative.ptr<short>(y), *d1 = derivative.ptr<short>(y + 1), *d2 = derivative.ptr<short>(y + 2);
+      const short *d0 = derivative.ptr<short>(y), *d1 = derivative.ptr<short>(y + 1),
+                  *d2 = derivative.ptr<short>(y + 2);
       for (int x = 0; x < width; ++x) {
         gx[x] = static_cast<short>(d0[x] + 2 * d1[x] + d2[x]);
         gy[x] = static_cast<short>(s2[x] - s0[x]);
@@ -49,8 +50,9 @@ FACADESLAM_KERNEL void sobel(const cv::Mat& padded, cv::Mat& smooth, cv::Mat& de
     } else {
       const short *s0 = smooth.ptr<short>(y), *s1 = smooth.ptr<short>(y + 1), *s3 = smooth.ptr<short>(y + 3),
                   *s4 = smooth.ptr<short>(y + 4);
-      const short *d0 = derivative.ptr<short>(y), *d1 = derivative.ptr<short>(y + 1), *d2 = derivative.ptr<short>(y + 2),
-                  *d3 = derivative.ptr<short>(y + 3), *d4 = derivative.ptr<short>(y + 4);
+      const short *d0 = derivative.ptr<short>(y), *d1 = derivative.ptr<short>(y + 1),
+                  *d2 = derivative.ptr<short>(y + 2), *d3 = derivative.ptr<short>(y + 3),
+                  *d4 = derivative.ptr<short>(y + 4);
       for (int x = 0; x < width; ++x) {
         gx[x] = static_cast<short>(d0[x] + 4 * (d1[x] + d3[x]) + 6 * d2[x] + d4[x]);
         gy[x] = static_cast<short>(s4[x] - s0[x] + 2 * (s3[x] - s1[x]));
@@ -152,10 +154,14 @@ FACADESLAM_KERNEL void suppress_non_maxima(const cv::Mat& dx, const cv::Mat& dy,
       if (m > low) {
         const int ax = std::abs(xs), ay = std::abs(ys) << kShift;
         const int tan22 = ax * kTan22, tan67 = tan22 + (ax << (kShift + 1));
-        if (ay < tan22) maximum = m > here[x - 1] && m >= here[x + 1];
-        else if (ay > tan67) maximum = m > above[x] && m >= below[x];
-        else if ((xs ^ ys) >= 0) maximum = m > above[x - 1] && m > below[x + 1];
-        else maximum = m > above[x + 1] && m > below[x - 1];
+        if (ay < tan22)
+          maximum = m > here[x - 1] && m >= here[x + 1];
+        else if (ay > tan67)
+          maximum = m > above[x] && m >= below[x];
+        else if ((xs ^ ys) >= 0)
+          maximum = m > above[x - 1] && m > below[x + 1];
+        else
+          maximum = m > above[x + 1] && m > below[x - 1];
       }
       out[x] = maximum ? (m > high ? kEdge : kWeak) : kNone;
       if (out[x] == kEdge) row_seeds[row_count++] = out + x;
@@ -194,8 +200,10 @@ void canny_edges(const cv::Mat& grey, int aperture, double low, double high, cv:
   b.derivative.create(b.padded.rows, grey.cols, CV_16S);
   b.dx.create(grey.size(), CV_16S);
   b.dy.create(grey.size(), CV_16S);
-  if (h == 1) sobel<1>(b.padded, b.smooth, b.derivative, b.dx, b.dy);
-  else sobel<2>(b.padded, b.smooth, b.derivative, b.dx, b.dy);
+  if (h == 1)
+    sobel<1>(b.padded, b.smooth, b.derivative, b.dx, b.dy);
+  else
+    sobel<2>(b.padded, b.smooth, b.derivative, b.dx, b.dy);
   // cv::Canny's integer thresholds: floor, low <= high, compared with >.
   const int low_threshold = cvFloor(std::min(low, high)), high_threshold = cvFloor(std::max(low, high));
   b.magnitude.create(grey.rows + 2, grey.cols + 2 + kLanes, CV_32S);

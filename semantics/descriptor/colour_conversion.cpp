@@ -20,8 +20,7 @@ bool is_linear(ColourSpace space) {
 std::array<LinearRow, 3> linear_map(ColourSpace space) {
   constexpr float s = 1.0f / 255.0f;
   switch (space) {
-    case ColourSpace::rgb:
-      return {{{0, 0, s, 0}, {0, s, 0, 0}, {s, 0, 0, 0}}};
+    case ColourSpace::rgb: return {{{0, 0, s, 0}, {0, s, 0, 0}, {s, 0, 0, 0}}};
     case ColourSpace::xyz:
       return {{{0.180423f * s, 0.357580f * s, 0.412453f * s, 0},
                {0.072169f * s, 0.715160f * s, 0.212671f * s, 0},
@@ -35,8 +34,7 @@ std::array<LinearRow, 3> linear_map(ColourSpace space) {
     }
     case ColourSpace::opponent:
       return {{{0, -0.5f * s, 0.5f * s, 0.5f}, {-0.5f * s, 0.25f * s, 0.25f * s, 0.5f}, {s / 3, s / 3, s / 3, 0}}};
-    default:
-      break;
+    default: break;
   }
   CV_Error(cv::Error::StsBadArg, "not a linear colour space");
 }
@@ -75,7 +73,8 @@ void convert_colour(const cv::Mat& bgr, const BgrPlanes& planes, ColourSpace spa
   if (is_linear(space)) {
     const auto map = linear_map(space);
     for (int c = 0; c < 3; ++c)
-      if (outputs[static_cast<std::size_t>(c)]) linear_channel(planes, map[static_cast<std::size_t>(c)], *outputs[static_cast<std::size_t>(c)]);
+      if (outputs[static_cast<std::size_t>(c)])
+        linear_channel(planes, map[static_cast<std::size_t>(c)], *outputs[static_cast<std::size_t>(c)]);
     return;
   }
   cv::Mat converted;
@@ -83,7 +82,8 @@ void convert_colour(const cv::Mat& bgr, const BgrPlanes& planes, ColourSpace spa
   std::vector<cv::Mat> channels;
   cv::split(converted, channels);
   for (int c = 0; c < 3; ++c)
-    if (outputs[static_cast<std::size_t>(c)]) scale_bytes(channels[static_cast<std::size_t>(c)], *outputs[static_cast<std::size_t>(c)]);
+    if (outputs[static_cast<std::size_t>(c)])
+      scale_bytes(channels[static_cast<std::size_t>(c)], *outputs[static_cast<std::size_t>(c)]);
 }
 
 void convert_colour_bytes(const cv::Mat& bgr, ColourSpace space, cv::Mat& bytes) {

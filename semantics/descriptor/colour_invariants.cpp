@@ -16,7 +16,8 @@ template <typename PixelFunction>
     const uchar* g = in.g.ptr<uchar>(y);
     const uchar* r = in.r.ptr<uchar>(y);
     float* o = out.ptr<float>(y);
-    for (int x = 0; x < out.cols; ++x) o[x] = f(static_cast<float>(r[x]), static_cast<float>(g[x]), static_cast<float>(b[x]));
+    for (int x = 0; x < out.cols; ++x)
+      o[x] = f(static_cast<float>(r[x]), static_cast<float>(g[x]), static_cast<float>(b[x]));
   }
 }
 

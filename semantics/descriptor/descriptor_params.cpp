@@ -9,15 +9,17 @@
 namespace facadeslam::semantics {
 namespace {
 
-constexpr std::array<std::string_view, 8> kColourSpaceNames{"RGB", "Lab", "Luv", "XYZ",
-                                                             "HSV", "HLS", "YCrCb", "OpponentRGB"};
+constexpr std::array<std::string_view, 8> kColourSpaceNames{"RGB", "Lab", "Luv",   "XYZ",
+                                                            "HSV", "HLS", "YCrCb", "OpponentRGB"};
 constexpr std::array<std::string_view, 2> kGradientNames{"Sobel", "Scharr"};
 
 template <typename T, std::size_t N>
 void require_in_table(const char* field, T value, const std::array<T, N>& table) {
   const bool found = std::any_of(table.begin(), table.end(), [&](T t) {
-    if constexpr (std::is_floating_point_v<T>) return std::abs(t - value) < 1e-9;
-    else return t == value;
+    if constexpr (std::is_floating_point_v<T>)
+      return std::abs(t - value) < 1e-9;
+    else
+      return t == value;
   });
   if (found) return;
   std::ostringstream msg;
@@ -28,9 +30,7 @@ void require_in_table(const char* field, T value, const std::array<T, N>& table)
 
 }  // namespace
 
-std::string_view colour_space_name(ColourSpace space) {
-  return kColourSpaceNames[static_cast<std::size_t>(space)];
-}
+std::string_view colour_space_name(ColourSpace space) { return kColourSpaceNames[static_cast<std::size_t>(space)]; }
 
 std::optional<ColourSpace> parse_colour_space(std::string_view name) {
   for (std::size_t i = 0; i < kColourSpaceNames.size(); ++i)
@@ -38,9 +38,7 @@ std::optional<ColourSpace> parse_colour_space(std::string_view name) {
   return std::nullopt;
 }
 
-std::string_view gradient_operator_name(GradientOperator op) {
-  return kGradientNames[static_cast<std::size_t>(op)];
-}
+std::string_view gradient_operator_name(GradientOperator op) { return kGradientNames[static_cast<std::size_t>(op)]; }
 
 std::optional<GradientOperator> parse_gradient_operator(std::string_view name) {
   for (std::size_t i = 0; i < kGradientNames.size(); ++i)

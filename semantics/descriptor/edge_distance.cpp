@@ -35,8 +35,8 @@ FACADESLAM_KERNEL void column_distances(const cv::Mat& edges, cv::Mat& g) {
 
 // Per-row buffers of row_distances.
 struct RowScratch {
-  std::vector<float> squares;  // g^2, with `width` columns of kFar^2 on both sides
-  std::vector<float> best;     // the best squared distance found so far, per pixel
+  std::vector<float> squares;   // g^2, with `width` columns of kFar^2 on both sides
+  std::vector<float> best;      // the best squared distance found so far, per pixel
   std::vector<int> unfinished;  // first pixels of the blocks pass 1 left unfinished
 };
 

@@ -24,8 +24,9 @@ void check_compatible(const PreparedImage& image, const DescriptorParams& params
   if (p.colour_space != params.colour_space || p.gaussian_kernel != params.gaussian_kernel ||
       p.gaussian_sigma != params.gaussian_sigma || p.canny_kernel != params.canny_kernel ||
       p.canny_low_threshold != params.canny_low_threshold || p.gradient_operator != params.gradient_operator)
-    throw Error("descriptor extraction: the image was prepared with other preprocessing parameters "
-                "(colour space, blur, Canny or gradient operator) than the descriptor's");
+    throw Error(
+        "descriptor extraction: the image was prepared with other preprocessing parameters "
+        "(colour space, blur, Canny or gradient operator) than the descriptor's");
   if (params.patch_radius > image.border)
     throw Error("descriptor extraction: patch radius " + std::to_string(params.patch_radius) +
                 " exceeds the prepared border of " + std::to_string(image.border) + " pixels");
@@ -38,8 +39,8 @@ void check_compatible(const PreparedImage& image, const DescriptorParams& params
 
 void check_keypoint(const cv::Point2f& kp, std::size_t index, cv::Size size) {
   const bool finite = std::isfinite(kp.x) && std::isfinite(kp.y);
-  const bool inside = finite && cvRound(kp.x) >= 0 && cvRound(kp.x) < size.width && cvRound(kp.y) >= 0 &&
-                      cvRound(kp.y) < size.height;
+  const bool inside =
+      finite && cvRound(kp.x) >= 0 && cvRound(kp.x) < size.width && cvRound(kp.y) >= 0 && cvRound(kp.y) < size.height;
   if (inside) return;
   std::ostringstream msg;
   msg << "descriptor extraction: keypoint " << index << " at (" << kp.x << ", " << kp.y << ") is "
@@ -95,8 +96,8 @@ ExtractionPlan plan_extraction(const ActivationMask& activation) {
   return plan;
 }
 
-cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keypoints,
-                const DescriptorParams& params, ExtractionStats* stats) {
+cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keypoints, const DescriptorParams& params,
+                ExtractionStats* stats) {
   check_compatible(image, params);
   for (std::size_t i = 0; i < keypoints.size(); ++i) check_keypoint(keypoints[i], i, image.image_size);
 

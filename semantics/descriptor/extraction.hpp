@@ -44,8 +44,8 @@ ExtractionPlan plan_extraction(const ActivationMask& activation);
 // or does not round to a pixel of the image is an Error naming it. A
 // keypoint's row does not depend on the other keypoints of the call (they
 // share work, never results).
-cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keypoints,
-                const DescriptorParams& params, ExtractionStats* stats = nullptr);
+cv::Mat extract(const PreparedImage& image, const std::vector<cv::Point2f>& keypoints, const DescriptorParams& params,
+                ExtractionStats* stats = nullptr);
 
 // Names of the output columns (value_names() of the active values).
 std::vector<std::string> active_value_names(const DescriptorParams& params);

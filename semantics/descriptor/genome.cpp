@@ -52,21 +52,44 @@ void require_index(int index) {
 // per-channel / per-statistic groups the thesis separates by commas are
 // simply concatenated (see module_layout.hpp for the value order).
 constexpr std::array<std::string_view, kModuleCount> kThesisActivation{
-    "11",                              // position: x, y
-    "101" "110",                       // mean (c0, c2), std (c0, c1)
-    "011" "000" "110",                 // eta 2nd order
-    "1001" "0100" "0101",              // eta 3rd order
-    "00101" "00001" "01110",           // eta 4th order
-    "100111" "100101" "111000",        // eta 5th order
-    "0100101" "1011101" "0001111",     // Hu
-    "101" "101",                       // Gevers l: mean (l1, l3), std (l1, l3)
-    "100" "111",                       // Gevers c: mean (c1), std (c1, c2, c3)
-    "10" "01",                         // Geusebroek: mean H, std C
-    "0101000110" "1010010100" "1000000110",  // affine moment invariants
-    "1" "1",                           // edge distance mean, std
-    "100" "110" "100",                 // singular values
-    "01110" "01010" "01110"            // gradient region means per channel
-    "0010111101" "1010110100" "0001011010",  // their differences per channel
+    "11",  // position: x, y
+    "101"
+    "110",  // mean (c0, c2), std (c0, c1)
+    "011"
+    "000"
+    "110",  // eta 2nd order
+    "1001"
+    "0100"
+    "0101",  // eta 3rd order
+    "00101"
+    "00001"
+    "01110",  // eta 4th order
+    "100111"
+    "100101"
+    "111000",  // eta 5th order
+    "0100101"
+    "1011101"
+    "0001111",  // Hu
+    "101"
+    "101",  // Gevers l: mean (l1, l3), std (l1, l3)
+    "100"
+    "111",  // Gevers c: mean (c1), std (c1, c2, c3)
+    "10"
+    "01",  // Geusebroek: mean H, std C
+    "0101000110"
+    "1010010100"
+    "1000000110",  // affine moment invariants
+    "1"
+    "1",  // edge distance mean, std
+    "100"
+    "110"
+    "100",  // singular values
+    "01110"
+    "01010"
+    "01110"  // gradient region means per channel
+    "0010111101"
+    "1010110100"
+    "0001011010",  // their differences per channel
 };
 
 }  // namespace
@@ -141,10 +164,11 @@ Genome Genome::parse(std::string_view text, std::string_view where) {
   for (int i = 0; i < kBits; ++i) {
     const char c = text[static_cast<std::size_t>(i)];
     if (c != '0' && c != '1') {
-      const std::string shown = std::isprint(static_cast<unsigned char>(c)) ? std::string(1, c)
-                                                                             : "byte " + std::to_string(static_cast<unsigned char>(c));
-      throw Error(prefix + "genome character " + std::to_string(i) + " (" + genome_bit_owner(i) + ") is '" +
-                  shown + "'; only '0' and '1' are allowed");
+      const std::string shown = std::isprint(static_cast<unsigned char>(c))
+                                    ? std::string(1, c)
+                                    : "byte " + std::to_string(static_cast<unsigned char>(c));
+      throw Error(prefix + "genome character " + std::to_string(i) + " (" + genome_bit_owner(i) + ") is '" + shown +
+                  "'; only '0' and '1' are allowed");
     }
     bits.set(static_cast<std::size_t>(i), c == '1');
   }
@@ -174,8 +198,7 @@ Genome Genome::thesis_best() {
 std::string genome_bit_owner(int index) {
   require_index(index);
   for (const ParameterField& f : kParameterFields)
-    if (index >= f.first_bit && index < f.first_bit + f.bit_count)
-      return "parameter field " + std::string(f.name);
+    if (index >= f.first_bit && index < f.first_bit + f.bit_count) return "parameter field " + std::string(f.name);
   const int value = index - Genome::kParameterBits;
   return "activation of " + value_name(value) + " in module " + std::string(module_name(module_of_value(value)));
 }

@@ -17,10 +17,21 @@ constexpr std::string_view kFormat = "facadeslam-genome";
 constexpr int kVersion = 1;
 
 const std::set<std::string>& known_keys() {
-  static const std::set<std::string> keys{
-      "format", "version", "colour_space", "patch_radius", "gaussian_kernel", "gaussian_sigma",
-      "forest_depth", "forest_size", "split_variables", "canny_kernel", "canny_low_threshold",
-      "canny_high_threshold", "gradient_operator", "active_value_count", "active_values"};
+  static const std::set<std::string> keys{"format",
+                                          "version",
+                                          "colour_space",
+                                          "patch_radius",
+                                          "gaussian_kernel",
+                                          "gaussian_sigma",
+                                          "forest_depth",
+                                          "forest_size",
+                                          "split_variables",
+                                          "canny_kernel",
+                                          "canny_low_threshold",
+                                          "canny_high_threshold",
+                                          "gradient_operator",
+                                          "active_value_count",
+                                          "active_values"};
   return keys;
 }
 
@@ -132,7 +143,8 @@ Genome genome_from_json(std::string_view json_text, std::string_view where) {
   DescriptorParams p;
   const std::string space = in.text("colour_space");
   const auto parsed_space = parse_colour_space(space);
-  if (!parsed_space) in.fail("key 'colour_space' = \"" + space + "\" is not one of RGB, Lab, Luv, XYZ, HSV, HLS, YCrCb, OpponentRGB");
+  if (!parsed_space)
+    in.fail("key 'colour_space' = \"" + space + "\" is not one of RGB, Lab, Luv, XYZ, HSV, HLS, YCrCb, OpponentRGB");
   p.colour_space = *parsed_space;
   p.patch_radius = table_value(in, "patch_radius", in.integer("patch_radius"), kPatchRadii);
   p.gaussian_kernel = table_value(in, "gaussian_kernel", in.integer("gaussian_kernel"), kGaussianKernels);
@@ -141,7 +153,8 @@ Genome genome_from_json(std::string_view json_text, std::string_view where) {
   p.forest_size = table_value(in, "forest_size", in.integer("forest_size"), kForestSizes);
   p.split_variables = table_value(in, "split_variables", in.integer("split_variables"), kSplitVariables);
   p.canny_kernel = table_value(in, "canny_kernel", in.integer("canny_kernel"), kCannyKernels);
-  p.canny_low_threshold = table_value(in, "canny_low_threshold", in.integer("canny_low_threshold"), kCannyLowThresholds);
+  p.canny_low_threshold =
+      table_value(in, "canny_low_threshold", in.integer("canny_low_threshold"), kCannyLowThresholds);
   if (root.contains("canny_high_threshold") && in.integer("canny_high_threshold") != p.canny_high_threshold())
     in.fail("key 'canny_high_threshold' must be 3 x canny_low_threshold = " + std::to_string(p.canny_high_threshold()));
   const std::string op = in.text("gradient_operator");
@@ -167,8 +180,10 @@ Genome genome_from_json(std::string_view json_text, std::string_view where) {
 }
 
 void save_genome(const std::filesystem::path& path, const Genome& genome) {
-  if (has_extension(path, ".json")) write_json(path, genome_to_json(genome));
-  else write_text_atomically(path, genome.to_string() + "\n");
+  if (has_extension(path, ".json"))
+    write_json(path, genome_to_json(genome));
+  else
+    write_text_atomically(path, genome.to_string() + "\n");
 }
 
 Genome load_genome(const std::filesystem::path& path) {

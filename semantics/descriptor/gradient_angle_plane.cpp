@@ -19,8 +19,8 @@ FACADESLAM_KERNEL void angles(const cv::Mat& channel, int border, cv::Mat& angle
     for (int x = 0; x < angle.cols; ++x) {
       const float gx = edge * (above[x + 1] - above[x - 1]) + centre * (here[x + 1] - here[x - 1]) +
                        edge * (below[x + 1] - below[x - 1]);
-      const float gy = edge * (below[x - 1] - above[x - 1]) + centre * (below[x] - above[x]) +
-                       edge * (below[x + 1] - above[x + 1]);
+      const float gy =
+          edge * (below[x - 1] - above[x - 1]) + centre * (below[x] - above[x]) + edge * (below[x + 1] - above[x + 1]);
       out[x] = angle_2pi(gy, gx);
     }
   }
@@ -30,8 +30,10 @@ FACADESLAM_KERNEL void angles(const cv::Mat& channel, int border, cv::Mat& angle
 
 void gradient_angle_plane(const cv::Mat& channel, int border, GradientOperator op, cv::Mat& angle) {
   CV_Assert(border >= 1 && channel.type() == CV_32F && angle.type() == CV_32F);
-  if (op == GradientOperator::scharr) angles<3, 10>(channel, border, angle);
-  else angles<1, 2>(channel, border, angle);
+  if (op == GradientOperator::scharr)
+    angles<3, 10>(channel, border, angle);
+  else
+    angles<1, 2>(channel, border, angle);
 }
 
 }  // namespace facadeslam::semantics

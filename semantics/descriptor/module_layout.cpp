@@ -8,9 +8,8 @@ namespace facadeslam::semantics {
 namespace {
 
 constexpr std::array<std::string_view, kModuleCount> kModuleNames{
-    "position", "mean_std", "moments2", "moments3", "moments4", "moments5", "hu",
-    "gevers_l", "gevers_c", "geusebroek", "affine_invariants", "edge_distance",
-    "singular_values", "gradient_angles"};
+    "position", "mean_std", "moments2",   "moments3",          "moments4",      "moments5",        "hu",
+    "gevers_l", "gevers_c", "geusebroek", "affine_invariants", "edge_distance", "singular_values", "gradient_angles"};
 
 std::string channel(int c) { return "_c" + std::to_string(c); }
 
@@ -28,9 +27,10 @@ std::array<std::string, kValueCount> build_names() {
   names.push_back("y_norm");
   add_mean_std(names, {"c0", "c1", "c2"});
   // Moments are grouped by channel (Table 5.4: "011,000,110").
-  const std::array<std::vector<std::string>, 4> orders{
-      std::vector<std::string>{"20", "11", "02"}, {"30", "21", "12", "03"},
-      {"40", "31", "22", "13", "04"}, {"50", "41", "32", "23", "14", "05"}};
+  const std::array<std::vector<std::string>, 4> orders{std::vector<std::string>{"20", "11", "02"},
+                                                       {"30", "21", "12", "03"},
+                                                       {"40", "31", "22", "13", "04"},
+                                                       {"50", "41", "32", "23", "14", "05"}};
   for (const auto& order : orders)
     for (int c = 0; c < 3; ++c)
       for (const auto& pq : order) names.push_back("eta" + pq + channel(c));

@@ -14,20 +14,20 @@
 namespace facadeslam::semantics {
 
 enum class Module : int {
-  position,          // normalised x, y of the keypoint                          2
-  mean_std,          // mean, sigma of each colour channel                       6
-  moments2,          // eta20 eta11 eta02 per channel                            9
-  moments3,          // eta30 eta21 eta12 eta03 per channel                     12
-  moments4,          // eta40 .. eta04 per channel                              15
-  moments5,          // eta50 .. eta05 per channel                              18
-  hu,                // Hu phi1..phi7 per channel                               21
-  gevers_l,          // mean, sigma of Gevers l1 l2 l3                           6
-  gevers_c,          // mean, sigma of Gevers c1 c2 c3                           6
-  geusebroek,        // mean, sigma of Geusebroek H and C                        4
-  affine_invariants, // Flusser-Suk I1..I10 per channel                         30
-  edge_distance,     // mean, sigma of the distance to the nearest Canny edge    2
-  singular_values,   // three largest singular values per channel                9
-  gradient_angles,   // 5 region means per channel + 10 differences per channel 45
+  position,           // normalised x, y of the keypoint                          2
+  mean_std,           // mean, sigma of each colour channel                       6
+  moments2,           // eta20 eta11 eta02 per channel                            9
+  moments3,           // eta30 eta21 eta12 eta03 per channel                     12
+  moments4,           // eta40 .. eta04 per channel                              15
+  moments5,           // eta50 .. eta05 per channel                              18
+  hu,                 // Hu phi1..phi7 per channel                               21
+  gevers_l,           // mean, sigma of Gevers l1 l2 l3                           6
+  gevers_c,           // mean, sigma of Gevers c1 c2 c3                           6
+  geusebroek,         // mean, sigma of Geusebroek H and C                        4
+  affine_invariants,  // Flusser-Suk I1..I10 per channel                         30
+  edge_distance,      // mean, sigma of the distance to the nearest Canny edge    2
+  singular_values,    // three largest singular values per channel                9
+  gradient_angles,    // 5 region means per channel + 10 differences per channel 45
 };
 
 inline constexpr int kModuleCount = 14;

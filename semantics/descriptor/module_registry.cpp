@@ -17,11 +17,20 @@
 namespace facadeslam::semantics {
 
 ModuleFunction module_function(Module m) {
-  static constexpr std::array<ModuleFunction, kModuleCount> kFunctions{
-      position_module,          mean_std_module,   moments2_module,        moments3_module,
-      moments4_module,          moments5_module,   hu_module,              gevers_l_module,
-      gevers_c_module,          geusebroek_module, affine_invariants_module, edge_distance_module,
-      singular_values_module,   gradient_angles_module};
+  static constexpr std::array<ModuleFunction, kModuleCount> kFunctions{position_module,
+                                                                       mean_std_module,
+                                                                       moments2_module,
+                                                                       moments3_module,
+                                                                       moments4_module,
+                                                                       moments5_module,
+                                                                       hu_module,
+                                                                       gevers_l_module,
+                                                                       gevers_c_module,
+                                                                       geusebroek_module,
+                                                                       affine_invariants_module,
+                                                                       edge_distance_module,
+                                                                       singular_values_module,
+                                                                       gradient_angles_module};
   return kFunctions[static_cast<std::size_t>(m)];
 }
 

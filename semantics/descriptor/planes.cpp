@@ -4,10 +4,9 @@ namespace facadeslam::semantics {
 namespace {
 
 constexpr std::array<std::string_view, kPlaneCount> kPlaneNames{
-    "colour channel 0", "colour channel 1", "colour channel 2",
-    "gradient angle 0", "gradient angle 1", "gradient angle 2",
-    "edge distance", "Gevers l1", "Gevers l2", "Gevers l3",
-    "Gevers c1", "Gevers c2", "Gevers c3", "Geusebroek H", "Geusebroek C"};
+    "colour channel 0", "colour channel 1", "colour channel 2", "gradient angle 0", "gradient angle 1",
+    "gradient angle 2", "edge distance",    "Gevers l1",        "Gevers l2",        "Gevers l3",
+    "Gevers c1",        "Gevers c2",        "Gevers c3",        "Geusebroek H",     "Geusebroek C"};
 
 // Bits of a per-channel module (channel-major groups of `per_channel` values)
 // that belong to channel c.
@@ -17,9 +16,7 @@ bool channel_used(std::uint64_t bits, int per_channel, int c) {
 }
 
 // Mean/std modules hold [mean_0..mean_(k-1), std_0..std_(k-1)].
-bool statistic_used(std::uint64_t bits, int k, int i) {
-  return ((bits >> i) & 1) != 0 || ((bits >> (k + i)) & 1) != 0;
-}
+bool statistic_used(std::uint64_t bits, int k, int i) { return ((bits >> i) & 1) != 0 || ((bits >> (k + i)) & 1) != 0; }
 
 }  // namespace
 
@@ -44,8 +41,10 @@ PlaneSet required_planes(const ActivationMask& activation) {
   }
   planes.set(plane_bit(PlaneId::edge_distance), bits(Module::edge_distance) != 0);
   for (int i = 0; i < 3; ++i) {
-    planes.set(plane_bit(PlaneId::gevers_l1) + static_cast<std::size_t>(i), statistic_used(bits(Module::gevers_l), 3, i));
-    planes.set(plane_bit(PlaneId::gevers_c1) + static_cast<std::size_t>(i), statistic_used(bits(Module::gevers_c), 3, i));
+    planes.set(plane_bit(PlaneId::gevers_l1) + static_cast<std::size_t>(i),
+               statistic_used(bits(Module::gevers_l), 3, i));
+    planes.set(plane_bit(PlaneId::gevers_c1) + static_cast<std::size_t>(i),
+               statistic_used(bits(Module::gevers_c), 3, i));
   }
   planes.set(plane_bit(PlaneId::geusebroek_h), statistic_used(bits(Module::geusebroek), 2, 0));
   planes.set(plane_bit(PlaneId::geusebroek_c), statistic_used(bits(Module::geusebroek), 2, 1));

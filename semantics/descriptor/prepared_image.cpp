@@ -151,7 +151,8 @@ void prepare(const cv::Mat& bgr, const DescriptorParams& params, PreparedImage& 
   for (int p = 0; p < kPlaneCount; ++p) {
     const auto id = static_cast<PlaneId>(p);
     const bool colour = p <= static_cast<int>(PlaneId::colour2);  // filled above
-    if (needed.test(static_cast<std::size_t>(p)) && !colour) fill_border_reflect101(out.planes[plane_bit(id)], out.border);
+    if (needed.test(static_cast<std::size_t>(p)) && !colour)
+      fill_border_reflect101(out.planes[plane_bit(id)], out.border);
   }
   out.computed = needed;
 }

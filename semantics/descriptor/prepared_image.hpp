@@ -30,11 +30,11 @@ namespace facadeslam::semantics {
 
 struct PreparedImage {
   cv::Size image_size;
-  int border = 0;            // reflected pixels around every plane
-  DescriptorParams params;   // the parameters it was prepared for
-  PlaneSet computed;         // which planes hold data
+  int border = 0;                           // reflected pixels around every plane
+  DescriptorParams params;                  // the parameters it was prepared for
+  PlaneSet computed;                        // which planes hold data
   std::array<cv::Mat, kPlaneCount> planes;  // padded CV_32F, empty when not computed
-  cv::Mat edges;             // CV_8U Canny edges (255 = edge), when edge distance was needed
+  cv::Mat edges;                            // CV_8U Canny edges (255 = edge), when edge distance was needed
 
   // Intermediate images, kept so that preparing the next image of the same
   // size reuses their memory.

@@ -11,8 +11,8 @@ namespace facadeslam::semantics {
 namespace {
 
 constexpr int kCell = 78;
-constexpr int kLeft = 150;   // room for the true-class names
-constexpr int kTop = 110;    // title + predicted-class names
+constexpr int kLeft = 150;  // room for the true-class names
+constexpr int kTop = 110;   // title + predicted-class names
 constexpr int kMargin = 20;
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 

@@ -17,9 +17,7 @@ KeypointSource parse_keypoint_source(const std::string& text, const std::string&
   throw Error(message.append(": expected grid or corners, got '").append(text).append("'"));
 }
 
-const char* keypoint_source_name(KeypointSource source) {
-  return source == KeypointSource::grid ? "grid" : "corners";
-}
+const char* keypoint_source_name(KeypointSource source) { return source == KeypointSource::grid ? "grid" : "corners"; }
 
 std::vector<cv::Point2f> corner_keypoints(const cv::Mat& bgr, int border, int threshold) {
   cv::Mat grey;

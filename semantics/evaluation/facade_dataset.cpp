@@ -59,7 +59,8 @@ std::vector<LabelledImage> read_facade_split(const fs::path& root, const std::st
     // Tolerate names listed with their photo extension.
     for (const char* extension : {".jpg", ".jpeg", ".png"}) {
       const std::string e = extension;
-      if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0) name.resize(name.size() - e.size());
+      if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0)
+        name.resize(name.size() - e.size());
     }
     // Names stay inside the dataset (core/util/input_confinement.hpp).
     require_confined(root / "images" / name, root, list_path, static_cast<std::size_t>(line_number), name);
@@ -141,7 +142,8 @@ DecodedImageCache::DecodedImageCache(const std::vector<LabelledImage>& images, s
   for (const LabelledImage& entry : images) {
     if (decoded_.count(entry.image)) continue;
     LoadedLabelledImage loaded = load_stored(entry);
-    const std::size_t size = loaded.bgr.total() * loaded.bgr.elemSize() + loaded.label.total() * loaded.label.elemSize();
+    const std::size_t size =
+        loaded.bgr.total() * loaded.bgr.elemSize() + loaded.label.total() * loaded.label.elemSize();
     if (bytes_ + size > budget_bytes) break;
     bytes_ += size;
     decoded_.emplace(entry.image, std::move(loaded));

@@ -43,9 +43,9 @@ std::string comparison_table(const std::vector<LabelEvaluation>& runs) {
   rule += "|---:|---:|\n";
   std::string table = header + rule;
   for (const LabelEvaluation& r : runs) {
-    table += fmt::format("| {} | {} | {} | {}", r.descriptor, r.descriptor_width,
-                         percent(r.confusion.overall_recognition_rate()),
-                         percent(r.confusion.average_recognition_rate()));
+    table +=
+        fmt::format("| {} | {} | {} | {}", r.descriptor, r.descriptor_width,
+                    percent(r.confusion.overall_recognition_rate()), percent(r.confusion.average_recognition_rate()));
     for (int k = 0; k < static_cast<int>(names.size()); ++k)
       table += " | " + (k < r.confusion.classes() ? percent(r.confusion.metrics(k).recall) : std::string("-"));
     table += fmt::format(" | {:.1f} | {:.1f} |\n", r.extraction_ms_per_image(), r.forest_ms_per_image());

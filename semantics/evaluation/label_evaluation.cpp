@@ -58,7 +58,8 @@ Json metrics_json(const ClassMetrics& m) {
 Json per_class_counts(const std::vector<std::size_t>& counts) {
   Json j = Json::object();
   const auto names = evaluation_class_names();
-  for (std::size_t k = 0; k < counts.size() && k < names.size(); ++k) j[names[k]] = static_cast<unsigned long long>(counts[k]);
+  for (std::size_t k = 0; k < counts.size() && k < names.size(); ++k)
+    j[names[k]] = static_cast<unsigned long long>(counts[k]);
   return j;
 }
 
@@ -253,7 +254,8 @@ Json to_json(const LabelEvaluation& r, const LabelEvaluationOptions& o) {
   Json rows = Json::array();
   for (int t = 0; t < r.confusion.classes(); ++t) {
     Json row = Json::array();
-    for (int p = 0; p < r.confusion.classes(); ++p) row.push_back(static_cast<unsigned long long>(r.confusion.at(t, p)));
+    for (int p = 0; p < r.confusion.classes(); ++p)
+      row.push_back(static_cast<unsigned long long>(r.confusion.at(t, p)));
     rows.push_back(std::move(row));
   }
   matrix["rows_true_columns_predicted"] = std::move(rows);

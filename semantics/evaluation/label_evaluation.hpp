@@ -33,13 +33,13 @@ struct LabelEvaluationOptions {
   std::string descriptor = "modular";  // a kPointDescriptorNames entry
   Genome genome = Genome::thesis_best();
   int step = kDefaultGridStep;
-  bool balance = false;                 // training_sample.hpp
-  std::size_t max_train_images = 0;     // first N of train.txt; 0 = all
-  std::size_t max_test_images = 0;      // first N of test.txt; 0 = all
-  std::size_t max_samples = 0;          // training keypoints cap; 0 = all
-  std::uint64_t seed = 1;               // training-sample draw and forest
-  std::filesystem::path model_out;      // save the trained forest here when set
-  bool grey = false;                    // train and test on the photos turned grey (a grey camera's model)
+  bool balance = false;              // training_sample.hpp
+  std::size_t max_train_images = 0;  // first N of train.txt; 0 = all
+  std::size_t max_test_images = 0;   // first N of test.txt; 0 = all
+  std::size_t max_samples = 0;       // training keypoints cap; 0 = all
+  std::uint64_t seed = 1;            // training-sample draw and forest
+  std::filesystem::path model_out;   // save the trained forest here when set
+  bool grey = false;                 // train and test on the photos turned grey (a grey camera's model)
   // > 0: each test keypoint is classified by the votes at full size plus
   // those in the image shrunk to this scale, as the semantic worker does
   // (configs/semantics.yaml context_scale); 0 = full size only.
@@ -58,11 +58,11 @@ struct LabelEvaluation {
   // otherwise (then the training counts below are unknown: null in JSON).
   std::filesystem::path model;
   std::size_t train_images = 0, test_images = 0;
-  std::size_t train_keypoints = 0;      // labelled grid keypoints of the training images
-  std::size_t train_samples = 0;        // rows the forest was trained on
+  std::size_t train_keypoints = 0;  // labelled grid keypoints of the training images
+  std::size_t train_samples = 0;    // rows the forest was trained on
   std::vector<std::size_t> train_keypoints_per_class, train_samples_per_class;
-  std::size_t test_keypoints = 0;       // labelled grid keypoints of the test images
-  std::size_t unlabelled_keypoints = 0; // skipped (colour of no class), train + test
+  std::size_t test_keypoints = 0;        // labelled grid keypoints of the test images
+  std::size_t unlabelled_keypoints = 0;  // skipped (colour of no class), train + test
   ConfusionMatrix confusion{1};
   double train_extraction_seconds = 0, training_seconds = 0;
   double test_extraction_seconds = 0, forest_seconds = 0, total_seconds = 0;
@@ -106,8 +106,7 @@ ClassifiedImages classify_labelled_images(const std::vector<LabelledImage>& imag
                                           PointDescriptor& descriptor, const RandomForest& forest,
                                           ConfusionMatrix& confusion, const AfterImage& after_image = {},
                                           const LabelledImageLoader& load = load_labelled_image,
-                                          double context_scale = 0.0,
-                                          KeypointSource keypoints = KeypointSource::grid);
+                                          double context_scale = 0.0, KeypointSource keypoints = KeypointSource::grid);
 
 // Class names in id order (LabelMeFacade's nine).
 std::vector<std::string> evaluation_class_names();

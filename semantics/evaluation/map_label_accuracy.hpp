@@ -21,7 +21,7 @@ namespace facadeslam::semantics {
 using GroundTruthLabels = std::function<cv::Mat(std::size_t frame_index)>;
 
 struct MapLabelAccuracy {
-  std::size_t evaluated = 0;      // labelled points with a ground-truth class
+  std::size_t evaluated = 0;  // labelled points with a ground-truth class
   std::size_t correct = 0;
   std::size_t without_truth = 0;  // labelled, but no ground truth at the point
   std::size_t unlabelled = 0;     // not labelled (yet): not counted above

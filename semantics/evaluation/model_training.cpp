@@ -50,7 +50,8 @@ TrainingRun train_model(const TrainingOptions& options) {
   }
   if (options.max_train_images > 0 && images.size() > options.max_train_images) images.resize(options.max_train_images);
   const std::size_t photos = images.size();
-  if (options.also_grey && options.grey) throw Error("training: --also-grey adds grey views to a colour model; a grey model (--grey) has only those");
+  if (options.also_grey && options.grey)
+    throw Error("training: --also-grey adds grey views to a colour model; a grey model (--grey) has only those");
   std::vector<LabelledImage> views = with_views(images, options.scales, options.grey);
   if (options.also_grey) {
     const std::vector<LabelledImage> grey_views = with_views(images, options.scales, true);

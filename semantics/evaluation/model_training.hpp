@@ -27,7 +27,7 @@ struct TrainingOptions {
   int step = kDefaultGridStep;
   KeypointSource keypoints = KeypointSource::grid;  // grid (the thesis') or FAST corners (the map's)
   bool balance = false;
-  double balance_power = 1.0;  // with balance: 1 = fully, (0, 1) partly (training_sample.hpp)
+  double balance_power = 1.0;        // with balance: 1 = fully, (0, 1) partly (training_sample.hpp)
   std::size_t max_train_images = 0;  // first N of train.txt; 0 = all
   std::size_t max_samples = 0;       // training keypoints cap; 0 = all
   std::uint64_t seed = 1;            // training-sample draw and forest

@@ -55,8 +55,8 @@ std::vector<std::size_t> balanced_class_rows(const std::vector<std::size_t>& cla
                                      : static_cast<double>(median) * std::pow(ratio, 1.0 - balance_power);
     total += wanted[c];
   }
-  const double scale = max_samples > 0 && total > static_cast<double>(max_samples)
-                           ? static_cast<double>(max_samples) / total : 1.0;
+  const double scale =
+      max_samples > 0 && total > static_cast<double>(max_samples) ? static_cast<double>(max_samples) / total : 1.0;
   for (std::size_t c = 0; c < class_counts.size(); ++c)
     if (class_counts[c] > 0) rows[c] = std::max<std::size_t>(1, static_cast<std::size_t>(wanted[c] * scale));
   return rows;

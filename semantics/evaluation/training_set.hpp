@@ -15,21 +15,21 @@
 namespace facadeslam::semantics {
 
 struct TrainingSetOptions {
-  int step = 9;                 // grid step
+  int step = 9;                                     // grid step
   KeypointSource keypoints = KeypointSource::grid;  // where the rows are described
-  bool balance = false;         // training_sample.hpp
-  double balance_power = 1.0;   // with balance: 1 = fully, (0, 1) partly (training_sample.hpp)
-  std::size_t max_samples = 0;  // 0 = every labelled keypoint
+  bool balance = false;                             // training_sample.hpp
+  double balance_power = 1.0;                       // with balance: 1 = fully, (0, 1) partly (training_sample.hpp)
+  std::size_t max_samples = 0;                      // 0 = every labelled keypoint
   std::uint64_t seed = 1;
   bool quiet = false;  // no info line (the optimiser builds hundreds of sets)
 };
 
 struct TrainingSetStats {
-  std::size_t keypoints = 0;             // labelled grid keypoints of the images
-  std::size_t samples = 0;               // rows drawn from them
+  std::size_t keypoints = 0;                                        // labelled grid keypoints of the images
+  std::size_t samples = 0;                                          // rows drawn from them
   std::vector<std::size_t> keypoints_per_class, samples_per_class;  // by class id
-  std::size_t unlabelled_keypoints = 0;  // grid points of no class colour
-  double extraction_seconds = 0;         // descriptor time only
+  std::size_t unlabelled_keypoints = 0;                             // grid points of no class colour
+  double extraction_seconds = 0;                                    // descriptor time only
 };
 
 struct TrainingSet {

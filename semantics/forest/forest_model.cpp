@@ -26,7 +26,8 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 std::string lower_file_name(const std::filesystem::path& path) {
   std::string name = path.filename().string();
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return name;
 }
 
@@ -41,7 +42,8 @@ int storage_format(const std::filesystem::path& path) {
   if (ends_with(name, ".yml") || ends_with(name, ".yaml")) return cv::FileStorage::FORMAT_YAML;
   if (ends_with(name, ".xml")) return cv::FileStorage::FORMAT_XML;
   if (ends_with(name, ".json")) return cv::FileStorage::FORMAT_JSON;
-  fail_file(path, "a model file name must end in .fsmodel (recommended), or .yml, .yaml, .xml or .json, optionally + .gz");
+  fail_file(path,
+            "a model file name must end in .fsmodel (recommended), or .yml, .yaml, .xml or .json, optionally + .gz");
 }
 
 void check_classes(const std::filesystem::path& path, const std::vector<ClassEntry>& classes,
@@ -138,7 +140,8 @@ const char* model_images_name(ModelImages images) {
 
 std::vector<ClassEntry> labelmefacade_class_table() {
   std::vector<ClassEntry> table;
-  for (const SemanticClass& c : kSemanticClasses) table.push_back({c.id, std::string(c.name), cv::Vec3b(c.r, c.g, c.b)});
+  for (const SemanticClass& c : kSemanticClasses)
+    table.push_back({c.id, std::string(c.name), cv::Vec3b(c.r, c.g, c.b)});
   return table;
 }
 
@@ -160,12 +163,16 @@ void save_forest_model(const std::filesystem::path& path, const ForestModel& mod
       out << "format" << kFormat << "version" << kVersion;
       out << "descriptor" << model.descriptor << "descriptor_width" << model.descriptor_width();
       out << "genome" << model.genome.to_string();
-      out << "classes" << "[";
+      out << "classes"
+          << "[";
       for (const ClassEntry& c : model.classes)
-        out << "{" << "id" << c.id << "name" << c.name << "rgb" << "[:" << int{c.rgb[0]} << int{c.rgb[1]} << int{c.rgb[2]} << "]"
+        out << "{"
+            << "id" << c.id << "name" << c.name << "rgb"
+            << "[:" << int{c.rgb[0]} << int{c.rgb[1]} << int{c.rgb[2]} << "]"
             << "}";
       out << "]";
-      out << "forest" << "{";
+      out << "forest"
+          << "{";
       model.forest.model()->write(out);
       out << "}";
       out.release();
@@ -196,15 +203,16 @@ ForestModel load_forest_model(const std::filesystem::path& path) {
 
   const ModelReader in(storage.root(), path);
   const std::string format = in.text("format");
-  if (format != kFormat) in.fail(cat("not a facadeslam forest model (format '", format, "', expected '", kFormat, "')"));
+  if (format != kFormat)
+    in.fail(cat("not a facadeslam forest model (format '", format, "', expected '", kFormat, "')"));
   const int version = in.integer("version");
-  if (version != kVersion)
-    in.fail(cat("model format version ", version, ", expected ", kVersion));
+  if (version != kVersion) in.fail(cat("model format version ", version, ", expected ", kVersion));
 
   ForestModel model;
   model.descriptor = in.text("descriptor");
   const int width = in.integer("descriptor_width");
-  if (model.descriptor.empty() || width <= 0) in.fail("key 'descriptor' must name a descriptor and 'descriptor_width' be > 0");
+  if (model.descriptor.empty() || width <= 0)
+    in.fail("key 'descriptor' must name a descriptor and 'descriptor_width' be > 0");
   model.genome = Genome::parse(in.text("genome"), cat(path.string(), " (key 'genome')"));
   model.classes = in.classes();
 
@@ -237,11 +245,11 @@ ForestModel load_forest_model(const std::filesystem::path& path, const ForestExp
   return model;
 }
 
-void check_forest_model(const std::filesystem::path& path, const ForestModel& model, const ForestExpectation& expected) {
+void check_forest_model(const std::filesystem::path& path, const ForestModel& model,
+                        const ForestExpectation& expected) {
   if (model.descriptor != expected.descriptor || model.descriptor_width() != expected.descriptor_width)
-    fail_file(path, cat("the model was trained on descriptor '", model.descriptor, "' with ",
-                        model.descriptor_width(), " values, expected '", expected.descriptor, "' with ",
-                        expected.descriptor_width, " values"));
+    fail_file(path, cat("the model was trained on descriptor '", model.descriptor, "' with ", model.descriptor_width(),
+                        " values, expected '", expected.descriptor, "' with ", expected.descriptor_width, " values"));
   if (!(model.genome == expected.genome)) {
     int first = 0;
     while (first < Genome::kBits && model.genome.bit(first) == expected.genome.bit(first)) ++first;

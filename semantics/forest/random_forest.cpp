@@ -129,7 +129,8 @@ void RandomForest::check() const {
   for (int i = 0; i < node_count; ++i) {
     const Node& n = nodes_[static_cast<std::size_t>(i)];
     if (n.var < 0) {
-      if (n.leaf_class < 0 || n.leaf_class >= class_count) throw Error("a leaf of the random forest has no valid class");
+      if (n.leaf_class < 0 || n.leaf_class >= class_count)
+        throw Error("a leaf of the random forest has no valid class");
       continue;
     }
     if (n.var >= width_) throw Error("a split of the random forest reads a value outside the descriptor");

@@ -83,7 +83,7 @@ class RandomForest {
   cv::Mat opencv_votes(const cv::Mat& samples) const;
 
  private:
-  void flatten();  // OpenCV's trees as nodes_ and roots_, then check()
+  void flatten();      // OpenCV's trees as nodes_ and roots_, then check()
   void check() const;  // throws Error on inconsistent nodes (damaged model)
 
   cv::Ptr<cv::ml::RTrees> model_;

@@ -15,7 +15,6 @@
 namespace facadeslam::semantics {
 namespace {
 
-
 struct Tilt {
   double viewpoint_degrees;  // theta
   double direction_degrees;  // phi
@@ -23,13 +22,22 @@ struct Tilt {
 
 // Cases 1..10 (header comment).
 constexpr std::array<Tilt, kAffineCaseCount> kTilts{{
-    {20, 0}, {30, 0}, {40, 0}, {50, 0}, {60, 0},
-    {20, 45}, {30, 45}, {40, 45}, {50, 45}, {60, 45},
+    {20, 0},
+    {30, 0},
+    {40, 0},
+    {50, 0},
+    {60, 0},
+    {20, 45},
+    {30, 45},
+    {40, 45},
+    {50, 45},
+    {60, 45},
 }};
 
 const Tilt& tilt_of(int affine_case) {
   if (affine_case < 1 || affine_case > kAffineCaseCount)
-    throw Error(cat("affine case ", affine_case, " does not exist (expected 0 = identity or 1..", kAffineCaseCount, ")"));
+    throw Error(
+        cat("affine case ", affine_case, " does not exist (expected 0 = identity or 1..", kAffineCaseCount, ")"));
   return kTilts[static_cast<std::size_t>(affine_case - 1)];
 }
 
@@ -46,7 +54,8 @@ cv::Matx22d affine_case_matrix(int affine_case) {
 std::string affine_case_description(int affine_case) {
   if (affine_case == 0) return "identity";
   const Tilt& t = tilt_of(affine_case);
-  return cat("tilt ", static_cast<int>(t.viewpoint_degrees), " deg along ", static_cast<int>(t.direction_degrees), " deg");
+  return cat("tilt ", static_cast<int>(t.viewpoint_degrees), " deg along ", static_cast<int>(t.direction_degrees),
+             " deg");
 }
 
 TransformedImage warp_about_centre(const cv::Mat& bgr, const cv::Matx22d& a) {

@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 constexpr const char* kImageExtensions = ".jpg .jpeg .png .bmp .ppm .pgm .tif .tiff";
 
 std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
@@ -74,8 +75,8 @@ void add_list(const fs::path& list, std::vector<fs::path>& out) {
     if (entry.empty() || entry[0] == '#') continue;
     const fs::path image = resolve_list_entry(folder, entry);
     if (image.empty())
-      fail_file(list, cat("line ", line_number, ": no image '", entry, "' (looked for it beside the list and as images/",
-                          entry, ".jpg/.jpeg/.png)"));
+      fail_file(list, cat("line ", line_number, ": no image '", entry,
+                          "' (looked for it beside the list and as images/", entry, ".jpg/.jpeg/.png)"));
     out.push_back(image);
   }
   if (out.size() == before) fail_file(list, "the image list names no image");
@@ -88,11 +89,16 @@ std::vector<fs::path> list_images(const std::vector<fs::path>& inputs, std::size
   std::vector<fs::path> images;
   for (const fs::path& input : inputs) {
     std::error_code ec;
-    if (fs::is_directory(input, ec)) add_folder(input, images);
-    else if (!is_file(input)) fail_file(input, "no such image file, folder or list");
-    else if (lower(input.extension().string()) == ".txt") add_list(input, images);
-    else if (is_image_name(input)) images.push_back(input);
-    else fail_file(input, cat("not an image file name (expected ", kImageExtensions, ", a folder or a .txt list)"));
+    if (fs::is_directory(input, ec))
+      add_folder(input, images);
+    else if (!is_file(input))
+      fail_file(input, "no such image file, folder or list");
+    else if (lower(input.extension().string()) == ".txt")
+      add_list(input, images);
+    else if (is_image_name(input))
+      images.push_back(input);
+    else
+      fail_file(input, cat("not an image file name (expected ", kImageExtensions, ", a folder or a .txt list)"));
   }
   if (max_images > 0 && images.size() > max_images) images.resize(max_images);
   return images;

@@ -19,7 +19,8 @@ plot::LinePlot case_plot(const InvarianceResult& result, const InvarianceCaseRes
   p.set_y_range(0.0, 1.0);
   plot::SeriesStyle style;
   style.markers = true;
-  for (std::size_t d = 0; d < result.descriptors.size(); ++d) p.add_series(result.descriptors[d], r.values, r.match_rate[d], style);
+  for (std::size_t d = 0; d < result.descriptors.size(); ++d)
+    p.add_series(result.descriptors[d], r.values, r.match_rate[d], style);
   return p;
 }
 
@@ -40,7 +41,8 @@ void save_invariance_figure(const std::filesystem::path& path, const InvarianceR
   plot::save_png(path, invariance_figure(result));
 }
 
-std::vector<std::filesystem::path> save_case_plots(const std::filesystem::path& folder, const InvarianceResult& result) {
+std::vector<std::filesystem::path> save_case_plots(const std::filesystem::path& folder,
+                                                   const InvarianceResult& result) {
   std::vector<std::filesystem::path> written;
   for (const InvarianceCaseResult& r : result.cases) {
     const std::filesystem::path path = folder / cat("invariance-", case_info(r.id).name, ".png");

@@ -16,7 +16,6 @@
 namespace facadeslam::semantics {
 namespace {
 
-
 void check_options(const std::vector<std::filesystem::path>& images, const std::vector<PointDescriptor*>& descriptors,
                    const InvarianceOptions& o) {
   if (o.step < 1) throw Error(cat("invariance: the grid step must be at least 1 pixel, got ", o.step));
@@ -106,8 +105,8 @@ InvarianceResult run_invariance(const std::vector<std::filesystem::path>& images
     if (bgr.empty()) fail_file(images[i], "cannot be read as an image");
     const std::vector<cv::Point2f> grid = grid_keypoints(bgr.size(), options.step, options.margin);
     if (grid.empty())
-      fail_file(images[i], cat("the image is ", bgr.cols, "x", bgr.rows, ": too small for one keypoint ", options.margin,
-                               " pixels from its edges"));
+      fail_file(images[i], cat("the image is ", bgr.cols, "x", bgr.rows, ": too small for one keypoint ",
+                               options.margin, " pixels from its edges"));
     result.reference_keypoints += grid.size();
     std::vector<cv::Mat> reference;
     for (PointDescriptor* d : descriptors) reference.push_back(d->compute(bgr, grid));

@@ -14,8 +14,8 @@
 namespace facadeslam::semantics {
 
 struct KeypointPairs {
-  std::vector<int> reference;         // index into the reference keypoints
-  std::vector<cv::Point2f> moved;     // its position in the changed image
+  std::vector<int> reference;      // index into the reference keypoints
+  std::vector<cv::Point2f> moved;  // its position in the changed image
 };
 
 // Throws Error when margin < 0 or the mask does not match the image.

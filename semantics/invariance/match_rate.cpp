@@ -25,7 +25,8 @@ std::vector<bool> matched_rows(const cv::Mat& d) {
   if (d.type() != CV_32F || d.rows != d.cols)
     throw Error("match rate: expected a square CV_32F matrix of squared distances");
   std::vector<bool> matched(static_cast<std::size_t>(d.rows));
-  for (int i = 0; i < d.rows; ++i) matched[static_cast<std::size_t>(i)] = counterpart_is_nearest(d.ptr<float>(i), d.cols, i);
+  for (int i = 0; i < d.rows; ++i)
+    matched[static_cast<std::size_t>(i)] = counterpart_is_nearest(d.ptr<float>(i), d.cols, i);
   return matched;
 }
 

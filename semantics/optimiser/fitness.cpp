@@ -59,7 +59,8 @@ FitnessSplit split_train_list(const std::filesystem::path& dataset, const GaOpti
     }
     return split;
   }
-  const auto validation = static_cast<std::size_t>(std::lround(options.validation_share * static_cast<double>(all.size())));
+  const auto validation =
+      static_cast<std::size_t>(std::lround(options.validation_share * static_cast<double>(all.size())));
   if (validation < 1 || validation >= all.size())
     throw Error(dataset.string() + ": train.txt lists " + std::to_string(all.size()) +
                 " images, too few to hold out a validation share of " + std::to_string(options.validation_share) +
@@ -75,7 +76,8 @@ FitnessSplit split_train_list(const std::filesystem::path& dataset, const GaOpti
 
 nlohmann::json to_json(const FitnessSplit& split) {
   // One fold: the layout runs have always written.
-  if (split.folds.size() == 1) return {{"train", names(split.folds[0].train)}, {"validation", names(split.folds[0].validation)}};
+  if (split.folds.size() == 1)
+    return {{"train", names(split.folds[0].train)}, {"validation", names(split.folds[0].validation)}};
   nlohmann::json folds = nlohmann::json::array();
   for (const FitnessFold& fold : split.folds)
     folds.push_back({{"train", names(fold.train)}, {"validation", names(fold.validation)}});
@@ -83,12 +85,17 @@ nlohmann::json to_json(const FitnessSplit& split) {
 }
 
 nlohmann::json to_json(const GenomeEvaluation& e) {
-  return {{"valid", e.valid},         {"overall", e.overall},
-          {"average", e.average},     {"time_ratio", e.time_ratio},
-          {"values", e.values},       {"invariance", e.invariance},
+  return {{"valid", e.valid},
+          {"overall", e.overall},
+          {"average", e.average},
+          {"time_ratio", e.time_ratio},
+          {"values", e.values},
+          {"invariance", e.invariance},
           {"objective", std::isfinite(e.objective) ? nlohmann::json(e.objective) : nlohmann::json()},
-          {"seconds", e.seconds},     {"describe_seconds", e.describe_seconds},
-          {"train_seconds", e.train_seconds}, {"validate_seconds", e.validate_seconds},
+          {"seconds", e.seconds},
+          {"describe_seconds", e.describe_seconds},
+          {"train_seconds", e.train_seconds},
+          {"validate_seconds", e.validate_seconds},
           {"invariance_seconds", e.invariance_seconds}};
 }
 
@@ -99,7 +106,8 @@ GenomeEvaluation evaluation_from_json(const nlohmann::json& j) {
   e.average = j.at("average").get<double>();
   e.time_ratio = j.at("time_ratio").get<double>();
   e.values = j.at("values").get<int>();
-  e.objective = j.at("objective").is_null() ? -std::numeric_limits<double>::infinity() : j.at("objective").get<double>();
+  e.objective =
+      j.at("objective").is_null() ? -std::numeric_limits<double>::infinity() : j.at("objective").get<double>();
   e.seconds = j.at("seconds").get<double>();
   e.describe_seconds = j.value("describe_seconds", 0.0);
   e.train_seconds = j.value("train_seconds", 0.0);

@@ -45,17 +45,17 @@ FitnessSplit split_train_list(const std::filesystem::path& dataset, const GaOpti
 nlohmann::json to_json(const FitnessSplit& split);
 
 struct GenomeEvaluation {
-  bool valid = false;          // a genome without an active value describes nothing
+  bool valid = false;               // a genome without an active value describes nothing
   double overall = 0, average = 0;  // recognition rates on the validation keypoints
-  double time_ratio = 0;       // modelled extraction time / cv::SIFT's on the same keypoints (cost_model.hpp)
-  double invariance = 0;       // mean match rate under the invariance cases (0 unless weighted)
-  int values = 0;              // descriptor length
-  double objective = 0;        // FitnessWeights applied (-infinity when invalid)
+  double time_ratio = 0;            // modelled extraction time / cv::SIFT's on the same keypoints (cost_model.hpp)
+  double invariance = 0;            // mean match rate under the invariance cases (0 unless weighted)
+  int values = 0;                   // descriptor length
+  double objective = 0;             // FitnessWeights applied (-infinity when invalid)
   // Wall time: where an evaluation's time went (never part of the objective).
-  double seconds = 0;          // the evaluation, of which:
-  double describe_seconds = 0;  // reading the training images and describing the sample
-  double train_seconds = 0;     // training the forest
-  double validate_seconds = 0;  // describing and classifying the validation keypoints
+  double seconds = 0;             // the evaluation, of which:
+  double describe_seconds = 0;    // reading the training images and describing the sample
+  double train_seconds = 0;       // training the forest
+  double validate_seconds = 0;    // describing and classifying the validation keypoints
   double invariance_seconds = 0;  // the invariance cases
 };
 nlohmann::json to_json(const GenomeEvaluation& e);

@@ -54,8 +54,8 @@ std::size_t spin(const std::vector<double>& cumulative, double r) {
 
 }  // namespace
 
-std::vector<std::size_t> select_parents(const std::vector<double>& fitness, std::size_t count,
-                                        const GaOptions& options, GaRandom& rng) {
+std::vector<std::size_t> select_parents(const std::vector<double>& fitness, std::size_t count, const GaOptions& options,
+                                        GaRandom& rng) {
   const std::size_t n = fitness.size();
   std::vector<std::size_t> out;
   out.reserve(count);

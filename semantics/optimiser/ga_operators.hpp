@@ -22,8 +22,8 @@ namespace facadeslam::semantics {
 std::vector<double> scale_linearly(const std::vector<double>& objectives, double multiple);
 
 // `count` parent indices drawn by `options.selection` from `fitness` (>= 0).
-std::vector<std::size_t> select_parents(const std::vector<double>& fitness, std::size_t count,
-                                        const GaOptions& options, GaRandom& rng);
+std::vector<std::size_t> select_parents(const std::vector<double>& fitness, std::size_t count, const GaOptions& options,
+                                        GaRandom& rng);
 
 // Two children of `a` and `b` by `kind` (one-point and two-point cut
 // between bits 1 and N-1; uniform draws a mask).

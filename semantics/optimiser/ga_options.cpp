@@ -28,16 +28,16 @@ GaOptions load_ga_options(const std::filesystem::path& path) {
   const ConfigNode root = ConfigNode::load_file(path);
   o.population = root.get_int("population", Range::closed(2, 100000), o.population);
   o.generations = root.get_int("generations", Range::closed(1, 100000), o.generations);
-  const std::string selection = root.get_choice(
-      "selection", {"roulette", "rank", "tournament", "stochastic_universal"}, to_string(o.selection));
-  o.selection = selection == "roulette" ? Selection::roulette
-                : selection == "rank"   ? Selection::rank
+  const std::string selection =
+      root.get_choice("selection", {"roulette", "rank", "tournament", "stochastic_universal"}, to_string(o.selection));
+  o.selection = selection == "roulette"     ? Selection::roulette
+                : selection == "rank"       ? Selection::rank
                 : selection == "tournament" ? Selection::tournament
                                             : Selection::stochastic_universal;
   o.tournament_size = root.get_int("tournament_size", Range::closed(1, 1000), o.tournament_size);
   const std::string crossover =
       root.get_choice("crossover", {"one_point", "two_point", "uniform"}, to_string(o.crossover));
-  o.crossover = crossover == "one_point" ? Crossover::one_point
+  o.crossover = crossover == "one_point"   ? Crossover::one_point
                 : crossover == "two_point" ? Crossover::two_point
                                            : Crossover::uniform;
   o.crossover_probability = root.get_double("crossover_probability", Range::closed(0, 1), o.crossover_probability);

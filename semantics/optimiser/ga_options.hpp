@@ -43,8 +43,8 @@ struct GaOptions {
   Selection selection = Selection::tournament;
   int tournament_size = 3;
   Crossover crossover = Crossover::two_point;
-  double crossover_probability = 0.9;  // P_C: a pair is crossed, else copied
-  double bit_flip_probability = 0.01;  // P_M per bit
+  double crossover_probability = 0.9;    // P_C: a pair is crossed, else copied
+  double bit_flip_probability = 0.01;    // P_M per bit
   double interchange_probability = 0.1;  // per child: two random bits swap places
   double reverse_probability = 0.1;      // per child: a bit and its neighbour swap
   int elites = 2;                        // best genomes copied unchanged

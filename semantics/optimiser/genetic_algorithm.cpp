@@ -23,8 +23,8 @@ Genome random_genome(GaRandom& rng, double activation_density) {
   const bool unbiased = activation_density == 0.5;
   for (int i = 0; i < Genome::kBits; ++i) {
     const bool parameter = i < Genome::kParameterBits;
-    const bool on = parameter || unbiased ? (rng() >> 63) != 0
-                                          : static_cast<double>(rng() >> 11) * 0x1.0p-53 < activation_density;
+    const bool on =
+        parameter || unbiased ? (rng() >> 63) != 0 : static_cast<double>(rng() >> 11) * 0x1.0p-53 < activation_density;
     bits.set(static_cast<std::size_t>(i), on);
   }
   return Genome(bits);
@@ -34,7 +34,8 @@ Genome random_genome(GaRandom& rng, double activation_density) {
 std::vector<std::size_t> ranking(const std::vector<double>& objectives) {
   std::vector<std::size_t> order(objectives.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return objectives[a] > objectives[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return objectives[a] > objectives[b]; });
   return order;
 }
 

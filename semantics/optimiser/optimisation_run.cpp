@@ -38,36 +38,36 @@ nlohmann::json settings_json(const OptimiseOptions& o) {
   nlohmann::json seeds = nlohmann::json::array();
   for (const Genome& s : o.seeds) seeds.push_back(s.to_string());
   nlohmann::json settings = {{"dataset", fs::absolute(o.dataset).lexically_normal().string()},
-          {"seed", o.seed},
-          {"population", g.population},
-          {"generations", g.generations},
-          {"selection", to_string(g.selection)},
-          {"tournament_size", g.tournament_size},
-          {"crossover", to_string(g.crossover)},
-          {"crossover_probability", g.crossover_probability},
-          {"bit_flip_probability", g.bit_flip_probability},
-          {"interchange_probability", g.interchange_probability},
-          {"reverse_probability", g.reverse_probability},
-          {"elites", g.elites},
-          {"scaling_multiple", g.scaling_multiple},
-          {"plateau_generations", g.plateau_generations},
-          {"plateau_tolerance", g.plateau_tolerance},
-          {"validation_share", g.validation_share},
-          {"max_train_images", g.max_train_images},
-          {"max_validation_images", g.max_validation_images},
-          {"max_samples", g.max_samples},
-          {"step", g.step},
-          {"max_trees", g.max_trees},
-          {"max_depth", g.max_depth},
-          {"fitness",
-           {{"overall", g.weights.overall},
-            {"average", g.weights.average},
-            {"invariance", g.weights.invariance},
-            {"time", g.weights.time},
-            {"target_time_ratio", g.weights.target_time_ratio},
-            {"size", g.weights.size}}},
-          {"cost_model", to_json(g.cost_model)},
-          {"seeds", seeds}};
+                             {"seed", o.seed},
+                             {"population", g.population},
+                             {"generations", g.generations},
+                             {"selection", to_string(g.selection)},
+                             {"tournament_size", g.tournament_size},
+                             {"crossover", to_string(g.crossover)},
+                             {"crossover_probability", g.crossover_probability},
+                             {"bit_flip_probability", g.bit_flip_probability},
+                             {"interchange_probability", g.interchange_probability},
+                             {"reverse_probability", g.reverse_probability},
+                             {"elites", g.elites},
+                             {"scaling_multiple", g.scaling_multiple},
+                             {"plateau_generations", g.plateau_generations},
+                             {"plateau_tolerance", g.plateau_tolerance},
+                             {"validation_share", g.validation_share},
+                             {"max_train_images", g.max_train_images},
+                             {"max_validation_images", g.max_validation_images},
+                             {"max_samples", g.max_samples},
+                             {"step", g.step},
+                             {"max_trees", g.max_trees},
+                             {"max_depth", g.max_depth},
+                             {"fitness",
+                              {{"overall", g.weights.overall},
+                               {"average", g.weights.average},
+                               {"invariance", g.weights.invariance},
+                               {"time", g.weights.time},
+                               {"target_time_ratio", g.weights.target_time_ratio},
+                               {"size", g.weights.size}}},
+                             {"cost_model", to_json(g.cost_model)},
+                             {"seeds", seeds}};
   // Only when set, so that the checkpoints of runs before the key existed still resume.
   if (g.folds > 1) settings["folds"] = g.folds;
   if (g.weights.invariance > 0) settings["invariance_images"] = g.invariance_images;
@@ -115,7 +115,6 @@ nlohmann::json read_json_file(const fs::path& path) {
     fail_file(path, std::string("valid JSON (") + e.what() + ")");
   }
 }
-
 
 void save_fitness_plot(const fs::path& path, const std::vector<GenerationSummary>& history) {
   plot::LinePlot p(1000, 700);
@@ -180,7 +179,8 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
   if (options.resume) {
     checkpoint = read_json_file(newest);
     if (!checkpoint.contains("settings") || checkpoint["settings"] != settings)
-      throw Error(newest.string() + ": written with other settings (config, seed, dataset or seeds) than this "
+      throw Error(newest.string() +
+                  ": written with other settings (config, seed, dataset or seeds) than this "
                   "run's; resume with the run's own");
   }
   const FitnessSplit split = split_train_list(options.dataset, options.ga, options.seed);
@@ -191,9 +191,8 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
     throw Error(options.out.string() + ": cannot create the run folder (" + ec.message() + ")");
   write_json(options.out / "split.json", to_json(split));
 
-  GeneticAlgorithm ga = options.resume
-                            ? GeneticAlgorithm::from_json(checkpoint.at("ga"), options.ga, newest.string())
-                            : GeneticAlgorithm(options.ga, options.seed, options.seeds);
+  GeneticAlgorithm ga = options.resume ? GeneticAlgorithm::from_json(checkpoint.at("ga"), options.ga, newest.string())
+                                       : GeneticAlgorithm(options.ga, options.seed, options.seeds);
   std::map<std::string, GenomeEvaluation> cache;
   if (options.resume) {
     try {
@@ -246,8 +245,8 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
     auto& cached = state["cache"] = nlohmann::json::object();
     for (const auto& [genome, evaluation] : cache) cached[genome] = to_json(evaluation);
     write_json(checkpoint_path(options.out, s.generation), state);
-    spdlog::info("optimise: generation {}: best {:.4f} mean {:.4f} worst {:.4f} ({} evaluated, {:.1f} s)",
-                 s.generation, s.best, s.mean, s.worst, fresh.size(), evaluating.elapsed_s());
+    spdlog::info("optimise: generation {}: best {:.4f} mean {:.4f} worst {:.4f} ({} evaluated, {:.1f} s)", s.generation,
+                 s.best, s.mean, s.worst, fresh.size(), evaluating.elapsed_s());
     progress.update(ga.history().size(), "best " + std::to_string(s.best));
     if (interrupt_requested() && !ga.finished()) {
       result.interrupted = true;
@@ -260,8 +259,9 @@ OptimiseResult run_optimisation(const OptimiseOptions& options, const EvaluateBa
 
   // The best genome of the whole run (elitism keeps it to the last generation).
   const auto& history = ga.history();
-  const auto best = std::max_element(history.begin(), history.end(),
-                                     [](const GenerationSummary& a, const GenerationSummary& b) { return a.best < b.best; });
+  const auto best =
+      std::max_element(history.begin(), history.end(),
+                       [](const GenerationSummary& a, const GenerationSummary& b) { return a.best < b.best; });
   result.best = *best;
   result.best_evaluation = cache.at(best->best_genome.to_string());
   result.generations = static_cast<int>(history.size());

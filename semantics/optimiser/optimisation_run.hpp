@@ -32,7 +32,7 @@ struct OptimiseOptions {
   std::uint64_t seed = 1;
   int workers = 1;
   bool resume = false;
-  bool train_best_model = true;  // best.fsmodel (a forest on the whole of train.txt)
+  bool train_best_model = true;                      // best.fsmodel (a forest on the whole of train.txt)
   std::vector<Genome> seeds{Genome::thesis_best()};  // put into the first generation
 };
 
@@ -45,10 +45,10 @@ std::vector<GenomeEvaluation> evaluate_in_threads(const FitnessEvaluator& evalua
                                                   int workers);
 
 struct OptimiseResult {
-  GenerationSummary best;          // over all generations
+  GenerationSummary best;  // over all generations
   GenomeEvaluation best_evaluation;
   int generations = 0;
-  std::size_t evaluations = 0;     // fitness evaluations made in this process
+  std::size_t evaluations = 0;  // fitness evaluations made in this process
   std::size_t cache_hits = 0;
   double seconds = 0, evaluation_seconds = 0;
   // Stopped by Ctrl-C / SIGTERM after a generation's checkpoint: no final

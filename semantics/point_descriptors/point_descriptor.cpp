@@ -39,7 +39,8 @@ std::unique_ptr<PointDescriptor> make_point_descriptor(std::string_view name, co
   throw Error(cat("unknown descriptor '", name, "' (expected one of ", known, ")"));
 }
 
-void check_descriptor_input(std::string_view descriptor, const cv::Mat& bgr, const std::vector<cv::Point2f>& keypoints) {
+void check_descriptor_input(std::string_view descriptor, const cv::Mat& bgr,
+                            const std::vector<cv::Point2f>& keypoints) {
   if (bgr.empty() || bgr.type() != CV_8UC3)
     throw Error(cat(descriptor, " descriptor: expected a non-empty 8-bit BGR image"));
   for (std::size_t i = 0; i < keypoints.size(); ++i) {
@@ -47,7 +48,8 @@ void check_descriptor_input(std::string_view descriptor, const cv::Mat& bgr, con
     const bool inside = std::isfinite(p.x) && std::isfinite(p.y) && cvRound(p.x) >= 0 && cvRound(p.x) < bgr.cols &&
                         cvRound(p.y) >= 0 && cvRound(p.y) < bgr.rows;
     if (!inside)
-      throw Error(cat(descriptor, " descriptor: keypoint ", i, " is not inside the ", bgr.cols, "x", bgr.rows, " image"));
+      throw Error(
+          cat(descriptor, " descriptor: keypoint ", i, " is not inside the ", bgr.cols, "x", bgr.rows, " image"));
   }
 }
 

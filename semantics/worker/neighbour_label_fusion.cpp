@@ -15,7 +15,7 @@ namespace {
 struct LabelledPoint {
   std::shared_ptr<MapPoint> point;
   Eigen::Vector3d position;
-  ClassVotes shares;  // the point's votes scaled to sum to 1
+  ClassVotes shares;    // the point's votes scaled to sum to 1
   bool finite = false;  // measured by two keyframes, nearer than kFarDepthRatio x its source's mean depth
 };
 
@@ -106,9 +106,8 @@ class PointGrid {
     const Eigen::Vector3i centre = cell_of(q);
     candidates_.clear();
     for (int shell = 0; shell <= kMaxShells; ++shell) {
-      visit_shell(centre, shell, [&](std::size_t j) {
-        candidates_.emplace_back((points_[j].position - q).squaredNorm(), j);
-      });
+      visit_shell(centre, shell,
+                  [&](std::size_t j) { candidates_.emplace_back((points_[j].position - q).squaredNorm(), j); });
       // Every point outside the shells searched lies at least shell * cell
       // away: done when the k-th nearest found is closer.
       if (candidates_.size() >= k) {

@@ -51,7 +51,8 @@ void SemanticWorker::use_grey_model(ForestModel model) {
 }
 
 void SemanticWorker::use_context_scale(double scale) {
-  if (!(scale >= 0.0 && scale < 1.0)) throw Error("semantic worker: a context scale in [0, 1) (0 = none), not " + std::to_string(scale));
+  if (!(scale >= 0.0 && scale < 1.0))
+    throw Error("semantic worker: a context scale in [0, 1) (0 = none), not " + std::to_string(scale));
   context_scale_ = scale;
 }
 

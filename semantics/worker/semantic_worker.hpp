@@ -28,12 +28,12 @@
 namespace facadeslam::semantics {
 
 struct SemanticWorkerStats {
-  std::size_t keyframes = 0;          // jobs done
+  std::size_t keyframes = 0;              // jobs done
   std::size_t observations_labelled = 0;  // votes added (a point gets one per keyframe measuring it)
   std::size_t observations_skipped = 0;   // bad by the time they came, or no colour image
-  std::vector<double> keyframe_ms;    // per job
-  std::size_t grey_keyframes = 0;     // jobs whose keyframe image was grey
-  bool grey_model = false;            // ... labelled by the grey model (else left unlabelled)
+  std::vector<double> keyframe_ms;        // per job
+  std::size_t grey_keyframes = 0;         // jobs whose keyframe image was grey
+  bool grey_model = false;                // ... labelled by the grey model (else left unlabelled)
 };
 
 // Whether a BGR image is grey (its three channels equal, sampled).

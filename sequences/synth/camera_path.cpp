@@ -31,9 +31,9 @@ Eigen::Isometry3d camera_pose(const Eigen::Vector3d& position, double heading, d
   R_b_c << 0, 0, 1,  //
       -1, 0, 0,      //
       0, -1, 0;
-  const Eigen::Matrix3d R_w_b = (Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()) *
-                                 Eigen::AngleAxisd(-pitch, Eigen::Vector3d::UnitY()))
-                                    .toRotationMatrix();
+  const Eigen::Matrix3d R_w_b =
+      (Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(-pitch, Eigen::Vector3d::UnitY()))
+          .toRotationMatrix();
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = R_w_b * R_b_c * Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   T.translation() = position;
@@ -62,8 +62,8 @@ Eigen::Matrix<double, 6, 1> SmoothJitter::at(double t) const {
   return v;
 }
 
-CameraPath::CameraPath(const StartSpec& start, const std::vector<SegmentSpec>& segments,
-                       const JitterSpec& handheld, std::uint64_t seed)
+CameraPath::CameraPath(const StartSpec& start, const std::vector<SegmentSpec>& segments, const JitterSpec& handheld,
+                       std::uint64_t seed)
     : segments_(segments), handheld_(handheld), handheld_jitter_(seed, kHandheldStream, handheld.frequency) {
   State state{start.position, deg_to_rad(start.heading_deg), deg_to_rad(start.pitch_deg), deg_to_rad(start.roll_deg)};
   double time = 0.0;
@@ -89,8 +89,8 @@ CameraPath::State CameraPath::advance(const State& from, const SegmentSpec& segm
     }
     case SegmentType::walk: {
       const double direction = from.heading + deg_to_rad(segment.direction_deg);
-      state.position += s * segment.speed * segment.duration *
-                        Eigen::Vector3d(std::cos(direction), std::sin(direction), 0.0);
+      state.position +=
+          s * segment.speed * segment.duration * Eigen::Vector3d(std::cos(direction), std::sin(direction), 0.0);
       // Two steps per second, a whole number of them so the bob ends at zero.
       const double steps = std::max(1.0, std::round(2.0 * segment.duration));
       state.position.z() += segment.bob * std::sin(2.0 * std::numbers::pi * steps * u);
@@ -110,8 +110,7 @@ CameraPath::State CameraPath::advance(const State& from, const SegmentSpec& segm
       state.heading = from.heading + s * deg_to_rad(segment.yaw_deg);
       state.pitch = from.pitch + s * deg_to_rad(segment.pitch_deg);
       break;
-    case SegmentType::shake:
-      break;  // the jitter is added in T_w_c()
+    case SegmentType::shake: break;  // the jitter is added in T_w_c()
   }
   return state;
 }

@@ -69,8 +69,8 @@ class CameraPath {
   double translation_gate(double t) const;
 
   std::vector<SegmentSpec> segments_;
-  std::vector<State> starts_;   // state at the start of each segment
-  std::vector<double> begins_;  // start time of each segment
+  std::vector<State> starts_;         // state at the start of each segment
+  std::vector<double> begins_;        // start time of each segment
   std::vector<SmoothJitter> shakes_;  // one per segment (used by shake segments)
   JitterSpec handheld_;
   SmoothJitter handheld_jitter_;

@@ -9,7 +9,8 @@ namespace facadeslam::synth {
 FrameSynthesizer::FrameSynthesizer(const SceneSpec& spec)
     : spec_(spec),
       renderer_(render::RendererSettings{0.05, static_cast<float>(spec.anisotropy)}),
-      street_(spec, renderer_), path_(spec.start, spec.trajectory, spec.handheld, spec.seed) {}
+      street_(spec, renderer_),
+      path_(spec.start, spec.trajectory, spec.handheld, spec.seed) {}
 
 SynthFrame FrameSynthesizer::render(int index) {
   if (index < 0 || index >= spec_.frames)
@@ -34,15 +35,15 @@ SynthFrame FrameSynthesizer::render(int index) {
     for (int k = 0; k < samples; ++k) {
       const bool middle = samples % 2 == 1 && k == samples / 2;
       const double t = middle ? frame.timestamp : frame.timestamp + exposure * ((k + 0.5) / samples - 0.5);
-      render::RenderResult sub = renderer_.render(street_.at(t), spec_.camera, path_.T_w_c(t),
-                                                  middle ? render::kAllLayers : render::kColour);
+      render::RenderResult sub =
+          renderer_.render(street_.at(t), spec_.camera, path_.T_w_c(t), middle ? render::kAllLayers : render::kColour);
       colour += sub.colour;
       if (middle) at_timestamp = sub;
     }
     colour /= samples;
     if (samples % 2 == 0)
-      at_timestamp = renderer_.render(street_.at(frame.timestamp), spec_.camera, frame.T_w_c,
-                                      render::kLabels | render::kDepth);
+      at_timestamp =
+          renderer_.render(street_.at(frame.timestamp), spec_.camera, frame.T_w_c, render::kLabels | render::kDepth);
   }
   apply_illumination(colour, illumination_at(spec_.lighting, frame.timestamp));
   add_pixel_noise(colour, spec_.noise_sigma, spec_.seed, index);

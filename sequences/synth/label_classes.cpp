@@ -68,8 +68,8 @@ std::string class_table_text() {
   out << "# facadeslam synthetic sequence: class table of the label PNGs (LabelMeFacade classes)\n"
       << "# id name red green blue\n";
   for (const auto& c : facade_classes())
-    out << int(id_of(c.id)) << " " << c.name << " " << int(c.rgb[0]) << " " << int(c.rgb[1]) << " "
-        << int(c.rgb[2]) << "\n";
+    out << int(id_of(c.id)) << " " << c.name << " " << int(c.rgb[0]) << " " << int(c.rgb[1]) << " " << int(c.rgb[2])
+        << "\n";
   return out.str();
 }
 

@@ -11,8 +11,20 @@ namespace {
 
 // Streams that keep the layers of one texture independent.
 enum TextureStream : std::uint64_t {
-  kRoadLarge = 1, kRoadMedium, kRoadGrain, kRoadRepair, kRoadManhole, kRoadDash, kRoadWear,
-  kSlabRow, kSlabTone, kSlabStain, kSlabGrain, kKerb, kSkyClouds, kSkyShade,
+  kRoadLarge = 1,
+  kRoadMedium,
+  kRoadGrain,
+  kRoadRepair,
+  kRoadManhole,
+  kRoadDash,
+  kRoadWear,
+  kSlabRow,
+  kSlabTone,
+  kSlabStain,
+  kSlabGrain,
+  kKerb,
+  kSkyClouds,
+  kSkyShade,
 };
 
 double quintic(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
@@ -80,8 +92,8 @@ cv::Mat ground_field(const GroundArea& a, double scale, int octaves, std::uint64
   cv::Mat coarse(a.rows / step + 2, a.columns / step + 2, CV_32FC1);
   for (int j = 0; j < coarse.rows; ++j)
     for (int i = 0; i < coarse.cols; ++i)
-      coarse.at<float>(j, i) = static_cast<float>(
-          fractal_noise(texel_x(a, i * step) / scale, texel_y(a, j * step) / scale, octaves, seed));
+      coarse.at<float>(j, i) =
+          static_cast<float>(fractal_noise(texel_x(a, i * step) / scale, texel_y(a, j * step) / scale, octaves, seed));
   return upsample(coarse, step, a.rows, a.columns);
 }
 
@@ -97,8 +109,7 @@ double value_noise(double x, double y, std::uint64_t seed) {
 
 double value_noise(double x, double y, double z, std::uint64_t seed) {
   const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
-  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy),
-             iz = static_cast<std::int64_t>(fz);
+  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy), iz = static_cast<std::int64_t>(fz);
   const double tx = quintic(x - fx), ty = quintic(y - fy), tz = quintic(z - fz);
   const auto plane = [&](std::int64_t k) {
     return lerp(lerp(lattice(ix, iy, k, seed), lattice(ix + 1, iy, k, seed), tx),
@@ -122,8 +133,8 @@ double fractal_noise(double x, double y, int octaves, std::uint64_t seed) {
 double fractal_noise(double x, double y, double z, int octaves, std::uint64_t seed) {
   double sum = 0.0, amplitude = 1.0, total = 0.0, frequency = 1.0;
   for (int o = 0; o < octaves; ++o) {
-    sum += amplitude * value_noise(x * frequency + 17.3 * o, y * frequency - 9.1 * o, z * frequency + 5.7 * o,
-                                   hash64(seed, o));
+    sum += amplitude *
+           value_noise(x * frequency + 17.3 * o, y * frequency - 9.1 * o, z * frequency + 5.7 * o, hash64(seed, o));
     total += amplitude;
     amplitude *= 0.5;
     frequency *= 2.0;
@@ -219,8 +230,8 @@ cv::Mat pavement_texture(const GroundArea& area, const StreetSpec& street, int s
         const double offset = length * lattice(row, 1, row_key);
         const auto slab = static_cast<std::int64_t>(std::floor((x + offset) / length));
         const double along = x + offset - slab * length;
-        const double joint = std::min({along, length - along, across - row * kRowWidth,
-                                       (row + 1) * kRowWidth - across});
+        const double joint =
+            std::min({along, length - along, across - row * kRowWidth, (row + 1) * kRowWidth - across});
         const double tone = 26.0 * (lattice(slab, row, hash64(seed, kSlabTone, side)) - 0.5);
         const double stain = stains.at<float>(j, i);
         v = 146.0 + tone + 30.0 * (stain - 0.5) + 7.0 * g;
@@ -248,10 +259,10 @@ cv::Mat sky_panorama(int width, int height, const SkySpec& sky, std::uint64_t se
   for (int j = 0; j < density.rows; ++j)
     for (int i = 0; i < density.cols; ++i) {
       const cv::Vec3d d = direction(i * kStep, j * kStep);
-      density.at<float>(j, i) = static_cast<float>(fractal_noise(3.0 * d[0], 3.0 * d[1], 3.0 * d[2], 5,
-                                                                  hash64(seed, kSkyClouds)));
-      shading.at<float>(j, i) = static_cast<float>(fractal_noise(6.0 * d[0], 6.0 * d[1], 6.0 * d[2], 3,
-                                                                  hash64(seed, kSkyShade)));
+      density.at<float>(j, i) =
+          static_cast<float>(fractal_noise(3.0 * d[0], 3.0 * d[1], 3.0 * d[2], 5, hash64(seed, kSkyClouds)));
+      shading.at<float>(j, i) =
+          static_cast<float>(fractal_noise(6.0 * d[0], 6.0 * d[1], 6.0 * d[2], 3, hash64(seed, kSkyShade)));
     }
   const cv::Mat clouds = upsample(density, kStep, height, width);
   const cv::Mat shade = upsample(shading, kStep, height, width);
@@ -263,9 +274,10 @@ cv::Mat sky_panorama(int width, int height, const SkySpec& sky, std::uint64_t se
     if (elevation < 0.0) gradient *= 0.85;
     for (int i = 0; i < width; ++i) {
       const double n = clouds.at<float>(j, i);
-      const double cover = sky.clouds <= 0.0 ? 0.0
-                                             : smooth_edge(1.0 - 0.8 * sky.clouds - 0.25, 1.0 - 0.8 * sky.clouds + 0.05, n) *
-                                                   smooth_edge(-0.02, 0.12, elevation);
+      const double cover = sky.clouds <= 0.0
+                               ? 0.0
+                               : smooth_edge(1.0 - 0.8 * sky.clouds - 0.25, 1.0 - 0.8 * sky.clouds + 0.05, n) *
+                                     smooth_edge(-0.02, 0.12, elevation);
       const double grey = 238.0 * (0.82 + 0.18 * shade.at<float>(j, i));
       const cv::Vec3d rgb = (1.0 - cover) * gradient + cover * cv::Vec3d(grey, grey, grey * 242.0 / 238.0);
       out.at<cv::Vec3b>(j, i) = bgr(rgb[2], rgb[1], rgb[0]);

@@ -18,18 +18,18 @@ namespace facadeslam::synth {
 struct Photo {
   std::filesystem::path image_path;
   std::filesystem::path label_path;
-  cv::Rect crop;    // in the original photo
-  cv::Mat colour;   // CV_8UC3 BGR, cropped
-  cv::Mat labels;   // CV_8UC1 class ids (label_classes.hpp), cropped
+  cv::Rect crop;   // in the original photo
+  cv::Mat colour;  // CV_8UC3 BGR, cropped
+  cv::Mat labels;  // CV_8UC1 class ids (label_classes.hpp), cropped
 };
 
 // A facade: a photo on a vertical rectangle. Its height follows from the
 // crop's aspect ratio.
 struct FacadeSpec {
   Photo photo;
-  double width = 10.0;                              // metres
+  double width = 10.0;                                 // metres
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // bottom centre, metres
-  double facing_deg = 0.0;  // azimuth of the outward normal (0 = +x, 90 = +y)
+  double facing_deg = 0.0;                             // azimuth of the outward normal (0 = +x, 90 = +y)
 };
 
 // A further street of the same cross-section as `street` (a scene that
@@ -44,11 +44,11 @@ struct StreetBranch {
 
 // The ground: a road along the x axis centred on y = 0, pavements either side.
 struct StreetSpec {
-  double road_width = 8.0;      // metres
-  double pavement_width = 10.0; // metres, each side, from the road edge outwards
-  double start = -20.0;         // x range covered, metres
+  double road_width = 8.0;       // metres
+  double pavement_width = 10.0;  // metres, each side, from the road edge outwards
+  double start = -20.0;          // x range covered, metres
   double end = 100.0;
-  double texel = 0.02;          // metres per texel of the procedural textures
+  double texel = 0.02;                 // metres per texel of the procedural textures
   std::vector<StreetBranch> branches;  // the scene's `streets:` list
 };
 
@@ -71,19 +71,19 @@ enum class SegmentType { pan, walk, arc, rotate, shake };
 // One piece of the trajectory; only the fields of its type are used.
 struct SegmentSpec {
   SegmentType type = SegmentType::walk;
-  double duration = 1.0;        // seconds
-  bool ease = true;             // start and end at rest (smooth), else constant rate
-  double distance = 0.0;        // pan: metres to the right (negative: left)
-  double speed = 1.4;           // walk: metres per second
-  double direction_deg = 0.0;   // walk: direction of travel relative to the heading (90 = left)
-  double bob = 0.0;             // walk: vertical head-bob amplitude, metres
-  double radius = 10.0;         // arc: metres
-  double angle_deg = 0.0;       // arc: heading change (positive: turn left)
-  double yaw_deg = 0.0;         // rotate: heading change (positive: left)
-  double pitch_deg = 0.0;       // rotate: pitch change (positive: up)
-  double translation = 0.0;     // shake: amplitude, metres
-  double rotation_deg = 0.0;    // shake: amplitude, degrees
-  double frequency = 2.0;       // shake: Hz
+  double duration = 1.0;       // seconds
+  bool ease = true;            // start and end at rest (smooth), else constant rate
+  double distance = 0.0;       // pan: metres to the right (negative: left)
+  double speed = 1.4;          // walk: metres per second
+  double direction_deg = 0.0;  // walk: direction of travel relative to the heading (90 = left)
+  double bob = 0.0;            // walk: vertical head-bob amplitude, metres
+  double radius = 10.0;        // arc: metres
+  double angle_deg = 0.0;      // arc: heading change (positive: turn left)
+  double yaw_deg = 0.0;        // rotate: heading change (positive: left)
+  double pitch_deg = 0.0;      // rotate: pitch change (positive: up)
+  double translation = 0.0;    // shake: amplitude, metres
+  double rotation_deg = 0.0;   // shake: amplitude, degrees
+  double frequency = 2.0;      // shake: Hz
 };
 
 // Smooth random jitter over the whole trajectory (a hand-held camera).
@@ -100,10 +100,10 @@ struct MotionBlurSpec {
 
 // Illumination at a time (the diagonal model of docs/design.md / thesis III.4.3).
 struct LightingKey {
-  double time = 0.0;           // seconds
-  double scale = 1.0;          // intensity scale a
-  double shift = 0.0;          // intensity shift o1, 8-bit units
-  double temperature = 6500.0; // illuminant colour temperature, kelvin (6500 = neutral)
+  double time = 0.0;            // seconds
+  double scale = 1.0;           // intensity scale a
+  double shift = 0.0;           // intensity shift o1, 8-bit units
+  double temperature = 6500.0;  // illuminant colour temperature, kelvin (6500 = neutral)
 };
 
 // A car cut out of a photo (its car-labelled pixels), driving from `from` to

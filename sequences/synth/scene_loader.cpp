@@ -69,9 +69,10 @@ fs::path existing_file(const ConfigNode& node, const std::string& key, const fs:
               relative);
   if (!paths_outside_inputs_allowed() &&
       !has_extension(path, {".jpg", ".jpeg", ".png", ".bmp", ".tif", ".tiff", ".ppm", ".pgm"}))
-    node.fail(key, std::string("an image file (.jpg, .jpeg, .png, .bmp, .tif, .tiff, .ppm, .pgm; ") + kOutsidePaths +
-                       " anyway)",
-              relative);
+    node.fail(
+        key,
+        std::string("an image file (.jpg, .jpeg, .png, .bmp, .tif, .tiff, .ppm, .pgm; ") + kOutsidePaths + " anyway)",
+        relative);
   if (!is_readable_file(path))
     node.fail(key, "an existing file (looked for " + path.string() + ", which " + describe_path(path) + ")", relative);
   return path;
@@ -84,19 +85,17 @@ Photo load_photo(const ConfigNode& node, const fs::path& photo_root) {
   const cv::Mat image = cv::imread(photo.image_path.string(), cv::IMREAD_COLOR);
   if (image.empty()) node.fail("image", "an image file OpenCV can read (PNG, JPEG, ...)", photo.image_path.string());
   const cv::Mat label_colours = cv::imread(photo.label_path.string(), cv::IMREAD_COLOR);
-  if (label_colours.empty())
-    node.fail("label", "a label map OpenCV can read (PNG)", photo.label_path.string());
+  if (label_colours.empty()) node.fail("label", "a label map OpenCV can read (PNG)", photo.label_path.string());
   if (label_colours.size() != image.size())
     node.fail("label", "a label map of the image's size " + size_text(image), size_text(label_colours));
   photo.crop = cv::Rect(0, 0, image.cols, image.rows);
   if (node.has("crop")) {
     const auto c = node.get_doubles("crop", 4, Range::closed(0, 1e5));
-    const std::string expected = "[x, y, width, height] in whole pixels, at least 8x8, inside the " +
-                                 size_text(image) + " photo";
+    const std::string expected =
+        "[x, y, width, height] in whole pixels, at least 8x8, inside the " + size_text(image) + " photo";
     for (double v : c)
       if (v != std::floor(v)) node.fail("crop", expected, number(v));
-    const cv::Rect crop(static_cast<int>(c[0]), static_cast<int>(c[1]), static_cast<int>(c[2]),
-                        static_cast<int>(c[3]));
+    const cv::Rect crop(static_cast<int>(c[0]), static_cast<int>(c[1]), static_cast<int>(c[2]), static_cast<int>(c[3]));
     if (crop.width < 8 || crop.height < 8 || crop.x < 0 || crop.y < 0 || crop.x + crop.width > image.cols ||
         crop.y + crop.height > image.rows)
       node.fail("crop", expected,
@@ -246,8 +245,8 @@ CarSpec read_car(const ConfigNode& node, const fs::path& photo_root) {
   node.finish();
   if (c.speed > 0.0 && (c.to - c.from).norm() < 1e-6) node.fail("to", "a point other than `from`");
   if (c.speed > 0.0 && c.period > 0.0 && c.period < (c.to - c.from).norm() / c.speed)
-    node.fail("period", "0 (once) or at least the time one pass takes (" +
-                            number((c.to - c.from).norm() / c.speed) + " s)",
+    node.fail("period",
+              "0 (once) or at least the time one pass takes (" + number((c.to - c.from).norm() / c.speed) + " s)",
               number(c.period));
   return c;
 }

@@ -31,7 +31,8 @@ std::string list_text(const SceneSpec& spec, int frames, const std::string& fold
   std::ostringstream out;
   out << "# " << what << " of a facadeslam synthetic sequence (scene " << spec.path.filename().string() << ")\n"
       << "# timestamp filename\n";
-  for (int i = 0; i < frames; ++i) out << timestamp_text(i / spec.fps) << " " << folder << "/" << frame_file_name(i) << "\n";
+  for (int i = 0; i < frames; ++i)
+    out << timestamp_text(i / spec.fps) << " " << folder << "/" << frame_file_name(i) << "\n";
   return out.str();
 }
 

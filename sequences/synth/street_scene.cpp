@@ -54,13 +54,12 @@ void add_ground_strip(render::Scene& scene, render::Renderer& renderer, const St
     area.rows = rows;
     area.texel = street.texel;
     area.texel_y = height / rows;
-    const cv::Mat texture =
-        side == 0 ? road_texture(area, street, seed) : pavement_texture(area, street, side, seed);
+    const cv::Mat texture = side == 0 ? road_texture(area, street, seed) : pavement_texture(area, street, side, seed);
     const Eigen::Vector3d top_left = placement.to_world({area.x0, area.y1, 0.0}, true);
     const Eigen::Vector3d right = placement.to_world({area.columns * street.texel, 0.0, 0.0}, false);
     const Eigen::Vector3d down = placement.to_world({0.0, -height, 0.0}, false);
-    scene.meshes.push_back(render::make_textured_quad(top_left, right, down, renderer.add_colour_texture(texture),
-                                                      {}, label));
+    scene.meshes.push_back(
+        render::make_textured_quad(top_left, right, down, renderer.add_colour_texture(texture), {}, label));
   }
 }
 
@@ -117,9 +116,10 @@ StreetScene::StreetScene(const SceneSpec& spec, render::Renderer& renderer) : sp
     // The textures are functions of the street's own coordinates: each
     // branch gets its own stretch of them, so no two streets look alike.
     const double offset = 100000.0 * static_cast<double>(i + 1);
-    streets.push_back({offset, offset + b.length, b.origin - offset * Eigen::Vector2d(std::cos(deg_to_rad(b.heading_deg)),
-                                                                                    std::sin(deg_to_rad(b.heading_deg))),
-                       deg_to_rad(b.heading_deg)});
+    streets.push_back(
+        {offset, offset + b.length,
+         b.origin - offset * Eigen::Vector2d(std::cos(deg_to_rad(b.heading_deg)), std::sin(deg_to_rad(b.heading_deg))),
+         deg_to_rad(b.heading_deg)});
   }
   const double half = 0.5 * street.road_width;
   for (const GroundPlacement& ground : streets) {
@@ -140,8 +140,8 @@ StreetScene::StreetScene(const SceneSpec& spec, render::Renderer& renderer) : sp
                                                         renderer.add_label_texture(facade.photo.labels)));
   }
   const cv::Mat panorama = sky_panorama(2048, 1024, spec.sky, hash64(spec.seed, kSky));
-  static_.sky = render::Sky{renderer.add_colour_texture(panorama, true), Eigen::Matrix3d::Identity(),
-                            id_of(FacadeClass::sky)};
+  static_.sky =
+      render::Sky{renderer.add_colour_texture(panorama, true), Eigen::Matrix3d::Identity(), id_of(FacadeClass::sky)};
   static_.background_label = id_of(FacadeClass::sky);
 
   const auto upload_cut_out = [&renderer](const Photo& photo, FacadeClass keep) {
@@ -162,8 +162,7 @@ render::Scene StreetScene::at(double t) const {
     if (!car_position(car, t, position)) continue;
     const Placement p =
         stand_upright({position.x(), position.y(), 0.0}, car.facing_deg, car.width, car.photo.colour.size());
-    scene.meshes.push_back(
-        render::make_textured_quad(p.top_left, p.right, p.down, cars_[i].colour, cars_[i].labels));
+    scene.meshes.push_back(render::make_textured_quad(p.top_left, p.right, p.down, cars_[i].colour, cars_[i].labels));
   }
   for (std::size_t i = 0; i < spec_.vegetation.size(); ++i) {
     const VegetationSpec& v = spec_.vegetation[i];

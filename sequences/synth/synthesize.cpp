@@ -53,8 +53,9 @@ SynthSummary synthesize_sequence(const SceneSpec& spec, const std::filesystem::p
   const Stopwatch start;
   FrameSynthesizer synthesizer(spec);
   SequenceWriter writer(folder, spec);
-  const std::vector<int> sheet_frames =
-      options.contact_sheet.empty() ? std::vector<int>{} : contact_sheet_frames(spec.frames, options.contact_sheet_frames);
+  const std::vector<int> sheet_frames = options.contact_sheet.empty()
+                                            ? std::vector<int>{}
+                                            : contact_sheet_frames(spec.frames, options.contact_sheet_frames);
   ContactSheet sheet(spec.path.stem().string() + "  (" + std::to_string(spec.frames) + " frames, " +
                      std::to_string(spec.camera.width()) + "x" + std::to_string(spec.camera.height()) + ")");
   // Frame i is encoded and written on a second thread while frame i + 1 is
@@ -78,8 +79,7 @@ SynthSummary synthesize_sequence(const SceneSpec& spec, const std::filesystem::p
   summary.frames = spec.frames;
   summary.renderer = synthesizer.gl_renderer();
   writer.finish(report(spec, summary.renderer));
-  if (!options.contact_sheet.empty())
-    plot::save_png(options.contact_sheet, sheet.image(), {});
+  if (!options.contact_sheet.empty()) plot::save_png(options.contact_sheet, sheet.image(), {});
   summary.seconds = start.elapsed_s();
   return summary;
 }

@@ -36,8 +36,7 @@ std::vector<int> spread_strongest_corners(const std::vector<Corner>& corners, in
   std::vector<int> chosen;
   const std::size_t count = std::min(rank_and_order.size(), static_cast<std::size_t>(max_count));
   chosen.reserve(count);
-  for (std::size_t k = 0; k < count; ++k)
-    chosen.push_back(order[static_cast<std::size_t>(rank_and_order[k].second)]);
+  for (std::size_t k = 0; k < count; ++k) chosen.push_back(order[static_cast<std::size_t>(rank_and_order[k].second)]);
   return chosen;
 }
 
@@ -53,8 +52,7 @@ std::vector<cv::Mat> CornerTracks::build_pyramid(const cv::Mat& grey) const {
   // (and as the next frame's previous pyramid); it must use the same window
   // and level count as calcOpticalFlowPyrLK.
   std::vector<cv::Mat> pyramid;
-  cv::buildOpticalFlowPyramid(grey, pyramid, cv::Size(options_.window_size, options_.window_size),
-                              options_.max_level);
+  cv::buildOpticalFlowPyramid(grey, pyramid, cv::Size(options_.window_size, options_.window_size), options_.max_level);
   return pyramid;
 }
 
@@ -62,8 +60,8 @@ void CornerTracks::reset(const cv::Mat& grey, const std::vector<Corner>& corners
   check_image(grey, "the reference image");
   for (const Corner& c : corners)
     if (c.x < 0 || c.y < 0 || c.x >= grey.cols || c.y >= grey.rows)
-      throw Error("corner tracks: corner (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
-                  ") lies outside the " + std::to_string(grey.cols) + "x" + std::to_string(grey.rows) +
+      throw Error("corner tracks: corner (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ") lies outside the " +
+                  std::to_string(grey.cols) + "x" + std::to_string(grey.rows) +
                   " reference image (corners must be level-0 pixels)");
   image_size_ = grey.size();
   previous_pyramid_ = build_pyramid(grey);
@@ -83,8 +81,8 @@ std::size_t CornerTracks::track(const cv::Mat& grey) {
   if (!has_reference()) throw Error("corner tracks: track() called before reset()");
   check_image(grey, "the tracked image");
   if (grey.size() != image_size_)
-    throw Error("corner tracks: the tracked image is " + std::to_string(grey.cols) + "x" +
-                std::to_string(grey.rows) + " but the reference was " + std::to_string(image_size_.width) + "x" +
+    throw Error("corner tracks: the tracked image is " + std::to_string(grey.cols) + "x" + std::to_string(grey.rows) +
+                " but the reference was " + std::to_string(image_size_.width) + "x" +
                 std::to_string(image_size_.height));
   std::vector<cv::Mat> pyramid = build_pyramid(grey);
   ++frames_tracked_;
@@ -101,8 +99,8 @@ std::size_t CornerTracks::track(const cv::Mat& grey) {
                                   options_.epsilon);
   std::vector<unsigned char> forward_ok, backward_ok;
   std::vector<float> error;
-  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid, previous, forward, forward_ok, error, window,
-                           options_.max_level, criteria);
+  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid, previous, forward, forward_ok, error, window, options_.max_level,
+                           criteria);
   // Backward pass starts from the forward result (no initial guess flag), so
   // it is an independent check rather than a copy of the forward flow.
   cv::calcOpticalFlowPyrLK(pyramid, previous_pyramid_, forward, backward, backward_ok, error, window,

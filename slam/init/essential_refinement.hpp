@@ -13,8 +13,8 @@
 namespace facadeslam {
 
 struct EssentialRefinementOptions {
-  double focal_px = 1.0;      // converts normalised residuals to pixels (sqrt(fx fy))
-  double huber_px = 1.0;      // Huber threshold on the Sampson distance, in pixels
+  double focal_px = 1.0;  // converts normalised residuals to pixels (sqrt(fx fy))
+  double huber_px = 1.0;  // Huber threshold on the Sampson distance, in pixels
   int max_iterations = 20;
 };
 

@@ -38,12 +38,11 @@ void validate(const TwoViewOptions& o) {
   require(o.ransac_max_iterations >= 1, "ransac_max_iterations", "an integer >= 1");
   require(o.homography_ratio_threshold > 0.0 && o.homography_ratio_threshold < 1.0, "homography_ratio_threshold",
           "a number in (0, 1)");
-  require(std::isfinite(o.min_point_parallax_deg) && o.min_point_parallax_deg >= 0.0 &&
-              o.min_point_parallax_deg < 90.0,
+  require(std::isfinite(o.min_point_parallax_deg) && o.min_point_parallax_deg >= 0.0 && o.min_point_parallax_deg < 90.0,
           "min_point_parallax_deg", "a number in [0, 90)");
-  require(std::isfinite(o.min_median_parallax_deg) && o.min_median_parallax_deg >= 0.0 &&
-              o.min_median_parallax_deg < 90.0,
-          "min_median_parallax_deg", "a number in [0, 90)");
+  require(
+      std::isfinite(o.min_median_parallax_deg) && o.min_median_parallax_deg >= 0.0 && o.min_median_parallax_deg < 90.0,
+      "min_median_parallax_deg", "a number in [0, 90)");
   require(finite_positive(o.max_reprojection_error_px), "max_reprojection_error_px", "a number > 0");
   require(o.min_points >= 8, "min_points", "an integer >= 8");
   require(o.min_triangulated_fraction >= 0.0 && o.min_triangulated_fraction <= 1.0, "min_triangulated_fraction",

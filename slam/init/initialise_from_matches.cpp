@@ -213,8 +213,8 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
   }
 
   // 4. The model and its pose hypotheses.
-  result.model = result.homography_ratio > options.homography_ratio_threshold ? TwoViewModel::homography
-                                                                                : TwoViewModel::essential;
+  result.model =
+      result.homography_ratio > options.homography_ratio_threshold ? TwoViewModel::homography : TwoViewModel::essential;
   const bool use_h = result.model == TwoViewModel::homography;
   std::vector<bool> model_inliers = use_h ? h_support.inliers : e_score.inliers;
   const std::vector<int> inliers = indices_of(model_inliers);
@@ -223,7 +223,8 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
   std::vector<Hypothesis> hypotheses;
   for (const SE3d& pose : poses) hypotheses.push_back({pose, evaluate_pose(camera, pose, matches, inliers, checks)});
   if (hypotheses.empty())
-    return fail(result, InitStatus::degenerate, fmt::format("the {} has no pose decomposition", to_string(result.model)));
+    return fail(result, InitStatus::degenerate,
+                fmt::format("the {} has no pose decomposition", to_string(result.model)));
   rank(hypotheses);
   const Hypothesis& best = hypotheses.front();
   result.median_parallax_deg = rad_to_deg(best.evaluation.median_parallax_rad());
@@ -285,10 +286,10 @@ TwoViewResult initialise_from_matches(const Camera& camera, const std::vector<Ei
                 fmt::format("{}: only {} points triangulate well (need {})", to_string(result.model),
                             final_eval.good_count(), options.min_points));
   if (good_fraction < options.min_triangulated_fraction)
-    return fail(result, InitStatus::degenerate,
-                fmt::format("{}: only {:.0f}% of the {} inliers triangulate well (need {:.0f}%)",
-                            to_string(result.model), 100.0 * good_fraction, inlier_count,
-                            100.0 * options.min_triangulated_fraction));
+    return fail(
+        result, InitStatus::degenerate,
+        fmt::format("{}: only {:.0f}% of the {} inliers triangulate well (need {:.0f}%)", to_string(result.model),
+                    100.0 * good_fraction, inlier_count, 100.0 * options.min_triangulated_fraction));
 
   // Scale: median depth 1 in the first camera.
   std::vector<double> depths;

@@ -40,8 +40,9 @@ void TwoViewInitialiser::reset(const cv::Mat& grey, const std::vector<Corner>& c
 
 InitStatus TwoViewInitialiser::add_frame(const cv::Mat& grey) {
   if (!has_reference_)
-    throw Error("two-view initialiser: add_frame() needs a reference frame; call reset() first (also after "
-                "too_few_tracks or success)");
+    throw Error(
+        "two-view initialiser: add_frame() needs a reference frame; call reset() first (also after "
+        "too_few_tracks or success)");
   check_image(grey, "the frame");
   tracks_.track(grey);
   last_ = initialise_from_matches(camera_, tracks_.reference_pixels(), tracks_.current_pixels(), options_);

@@ -35,7 +35,8 @@ inline std::string shell_quoted(const std::string& s) {
 }
 
 // Runs `binary arguments` with stdout/stderr captured in files of `scratch`.
-inline CliResult run_cli(const std::string& binary, const std::string& arguments, const std::filesystem::path& scratch) {
+inline CliResult run_cli(const std::string& binary, const std::string& arguments,
+                         const std::filesystem::path& scratch) {
   const auto out = scratch / "stdout.txt", err = scratch / "stderr.txt";
   std::string command = shell_quoted(binary);
   command.append(" ").append(arguments).append(" > ").append(shell_quoted(out.string()));

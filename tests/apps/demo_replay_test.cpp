@@ -30,8 +30,8 @@ TEST(DemoReplay, TheEmbeddedDemoThreadedTracksWithinHalfAPercent) {
   // default model are found relative to it).
   const fs::path previous = fs::current_path();
   fs::current_path(test::source_dir());
-  const test::CliResult r = test::run_cli(FACADESLAM_BINARY, "-q replay --out " + test::shell_quoted(out.string()),
-                                          dir / "scratch");
+  const test::CliResult r =
+      test::run_cli(FACADESLAM_BINARY, "-q replay --out " + test::shell_quoted(out.string()), dir / "scratch");
   fs::current_path(previous);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = test::read_file_text(out / "report.json");

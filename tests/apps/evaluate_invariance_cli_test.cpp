@@ -19,8 +19,8 @@
 namespace facadeslam {
 namespace {
 
-using ::testing::HasSubstr;
 using semantics::cat;
+using ::testing::HasSubstr;
 
 // The numbers under `key` in the case `case_name` of an invariance report
 // (the case's own keys, then its match rates per descriptor); null is NaN.
@@ -108,7 +108,8 @@ TEST_F(EvaluateInvarianceCli, MissingImagesFolder) {
 
 TEST_F(EvaluateInvarianceCli, EmptyImagesFolder) {
   std::filesystem::create_directories(dir_ / "empty");
-  expect_one_line_error(cat("--images ", test::shell_quoted((dir_ / "empty").string())), "no image files in the folder");
+  expect_one_line_error(cat("--images ", test::shell_quoted((dir_ / "empty").string())),
+                        "no image files in the folder");
 }
 
 TEST_F(EvaluateInvarianceCli, UnknownDescriptorOrCase) {
@@ -121,7 +122,8 @@ TEST_F(EvaluateInvarianceCli, BadCaseParameters) {
   expect_one_line_error(cat(images_option(), " --jpeg 101"), "--jpeg: 101 is not a valid quality");
   expect_one_line_error(cat(images_option(), " --resize=-1"), "--resize: -1 is not a valid scale factor");
   expect_one_line_error(cat(images_option(), " --affine 11"), "--affine: 11");
-  expect_one_line_error(cat(images_option(), " --cases blur --jpeg 50"), "--jpeg: values given for a case that --cases leaves out");
+  expect_one_line_error(cat(images_option(), " --cases blur --jpeg 50"),
+                        "--jpeg: values given for a case that --cases leaves out");
   expect_one_line_error(cat(images_option(), " --step 0"), "--step");
 }
 

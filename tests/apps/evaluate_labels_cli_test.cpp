@@ -30,7 +30,8 @@ class EvaluateLabelsCli : public test::DatasetCliTest {
   }
   // " --json J --confusion P", quoted.
   static std::string report_options(const std::filesystem::path& json, const std::filesystem::path& png) {
-    return semantics::cat(" --json ", test::shell_quoted(json.string()), " --confusion ", test::shell_quoted(png.string()));
+    return semantics::cat(" --json ", test::shell_quoted(json.string()), " --confusion ",
+                          test::shell_quoted(png.string()));
   }
   // The run must fail with exactly one line on stderr.
   void expect_one_line_error(const test::CliResult& r, const std::string& mention) {
@@ -53,8 +54,8 @@ TEST_F(EvaluateLabelsCli, WritesReportPlotAndModel) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("overall recognition rate"));
   const std::string report = test::read_file_text(json);
-  for (const char* key : {"overall_recognition_rate", "average_recognition_rate", "extraction_ms_per_image",
-                          "forest_ms_per_image"})
+  for (const char* key :
+       {"overall_recognition_rate", "average_recognition_rate", "extraction_ms_per_image", "forest_ms_per_image"})
     EXPECT_TRUE(std::isfinite(test::json_number(report, key))) << key;
   EXPECT_GT(test::json_number(report, "overall_recognition_rate"), 0.8);
   EXPECT_EQ(test::json_number(report, "test_images"), 2.0);
@@ -78,8 +79,9 @@ TEST_F(EvaluateLabelsCli, SeveralDescriptorsInOneRunGiveAComparison) {
   EXPECT_FALSE(cv::imread((dir_ / "out/confusion_orb.png").string()).empty());
   EXPECT_FALSE(std::filesystem::exists(png));
   // A model file holds one forest.
-  expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --descriptor all --model-out m.yml.gz")),
-                        "one --descriptor");
+  expect_one_line_error(
+      run(semantics::cat("evaluate labels ", dataset_option(), " --descriptor all --model-out m.yml.gz")),
+      "one --descriptor");
 }
 
 TEST_F(EvaluateLabelsCli, GenomeAsStringOrFile) {
@@ -87,7 +89,9 @@ TEST_F(EvaluateLabelsCli, GenomeAsStringOrFile) {
   test::write_text(dir_ / "genome.txt", bits + "\n");
   for (const std::string& genome : {bits, (dir_ / "genome.txt").string()}) {
     std::string args = "-q evaluate labels ";
-    args.append(dataset_option()).append(" --max-train 1 --max-test 1 --step 12 --genome ").append(test::shell_quoted(genome));
+    args.append(dataset_option())
+        .append(" --max-train 1 --max-test 1 --step 12 --genome ")
+        .append(test::shell_quoted(genome));
     const auto r = run(args);
     EXPECT_EQ(r.exit_code, 0) << r.err;
   }
@@ -128,7 +132,8 @@ TEST_F(EvaluateLabelsCli, BadGenomeString) {
 
 TEST_F(EvaluateLabelsCli, BadOutputNamesFailBeforeTheRun) {
   expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --confusion cm.jpg")), ".png");
-  expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --model-out model.bin")), ".fsmodel");
+  expect_one_line_error(run(semantics::cat("evaluate labels ", dataset_option(), " --model-out model.bin")),
+                        ".fsmodel");
 }
 
 }  // namespace

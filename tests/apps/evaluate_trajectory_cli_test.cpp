@@ -54,9 +54,7 @@ class EvaluateTrajectoryCli : public ::testing::Test {
 };
 
 // One line of text ending in a newline.
-bool is_one_line(const std::string& s) {
-  return !s.empty() && s.back() == '\n' && s.find('\n') == s.size() - 1;
-}
+bool is_one_line(const std::string& s) { return !s.empty() && s.back() == '\n' && s.find('\n') == s.size() - 1; }
 
 // `"key":` as it appears in the report (appended, for the same GCC 12 warning).
 std::string json_key(const std::string& key) {
@@ -83,8 +81,8 @@ TEST_F(EvaluateTrajectoryCli, WritesTableJsonAndPlot) {
   EXPECT_EQ(r.err, "");
 
   const std::string report = test::read_file_text(json);
-  for (const char* key : {"pairs", "scale", "ate_rmse_m", "ate_mean_m", "ate_median_m", "ate_max_m",
-                          "rpe_trans_rmse_m", "rpe_rot_rmse_deg", "path_length_m", "ate_percent_of_path"})
+  for (const char* key : {"pairs", "scale", "ate_rmse_m", "ate_mean_m", "ate_median_m", "ate_max_m", "rpe_trans_rmse_m",
+                          "rpe_rot_rmse_deg", "path_length_m", "ate_percent_of_path"})
     EXPECT_THAT(report, HasSubstr(json_key(key))) << key;
   EXPECT_EQ(json_number(report, "pairs"), 60.0);
   EXPECT_NEAR(json_number(report, "scale"), 2.0, 1e-6);
@@ -99,9 +97,9 @@ TEST_F(EvaluateTrajectoryCli, WritesTableJsonAndPlot) {
 TEST_F(EvaluateTrajectoryCli, BundledFr1XyzMatchesTheReference) {
   const auto data = test::source_dir() / "data" / "trajectories";
   const auto json = dir_ / "fr1.json";
-  const auto r = run("-q evaluate trajectory --gt " + quoted((data / "freiburg1_xyz-groundtruth.txt").string()) +
-                     " --est " + quoted((data / "freiburg1_xyz-ORB_kf_mono.txt").string()) + " --json " +
-                     quoted(json.string()));
+  const auto r =
+      run("-q evaluate trajectory --gt " + quoted((data / "freiburg1_xyz-groundtruth.txt").string()) + " --est " +
+          quoted((data / "freiburg1_xyz-ORB_kf_mono.txt").string()) + " --json " + quoted(json.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = test::read_file_text(json);
   EXPECT_EQ(json_number(report, "pairs"), 32.0);
@@ -112,7 +110,8 @@ TEST_F(EvaluateTrajectoryCli, BundledFr1XyzMatchesTheReference) {
 TEST_F(EvaluateTrajectoryCli, Se3KeepsTheScaleError) {
   write_pair();
   const auto json = dir_ / "eval.json";
-  const auto r = run("-q evaluate trajectory " + inputs() + " --align se3 --rpe-delta 2 --json " + quoted(json.string()));
+  const auto r =
+      run("-q evaluate trajectory " + inputs() + " --align se3 --rpe-delta 2 --json " + quoted(json.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = test::read_file_text(json);
   EXPECT_EQ(json_number(report, "scale"), 1.0);

@@ -101,7 +101,8 @@ class Process {
   // most `seconds`.
   int exit_code(double seconds, bool* killed = nullptr) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (running() && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    while (running() && std::chrono::steady_clock::now() < end)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (running()) {
       ADD_FAILURE() << "still running after " << seconds << " s";
       return -1;
@@ -180,9 +181,9 @@ TEST_F(InterruptCli, TrainStopsOnEachSignalLeavingTheEarlierModel) {
     const fs::path out = dir_ / ("models-" + std::to_string(signal));
     write_earlier_model(out / "m.fsmodel");
     const auto before = snapshot(out);
-    Process run({"train", "--dataset", (dir_ / "data").string(), "--scales", "0.5,1,2", "--trees", "40", "--depth", "30",
-             "--out", (out / "m.fsmodel").string()},
-            logs(), "train");
+    Process run({"train", "--dataset", (dir_ / "data").string(), "--scales", "0.5,1,2", "--trees", "40", "--depth",
+                 "30", "--out", (out / "m.fsmodel").string()},
+                logs(), "train");
     EXPECT_EQ(stop(run, signal, 1.0), code) << run.err();
     EXPECT_EQ(snapshot(out), before) << "the earlier model was changed";
     EXPECT_THAT(hidden_entries(out), ::testing::IsEmpty());
@@ -195,10 +196,12 @@ TEST_F(InterruptCli, EvaluateInvarianceStopsOnSigterm) {
   for (int i = 0; i < 2; ++i)
     cv::imwrite((dir_ / "images" / ("p" + std::to_string(i) + ".png")).string(),
                 test::smooth_random_texture(320, 240, 10 + i));
-  test::write_text(dir_ / "report.json", "{\"images\": [], \"grid_step\": 9, \"margin\": 5, \"reference_keypoints\": 1}\n");
+  test::write_text(dir_ / "report.json",
+                   "{\"images\": [], \"grid_step\": 9, \"margin\": 5, \"reference_keypoints\": 1}\n");
   const std::string before = test::read_file_text(dir_ / "report.json");
-  Process run({"evaluate", "invariance", "--images", (dir_ / "images").string(), "--json", (dir_ / "report.json").string()},
-          logs(), "invariance");
+  Process run(
+      {"evaluate", "invariance", "--images", (dir_ / "images").string(), "--json", (dir_ / "report.json").string()},
+      logs(), "invariance");
   EXPECT_EQ(stop(run, SIGTERM, 1.0), 143) << run.err();
   EXPECT_EQ(test::read_file_text(dir_ / "report.json"), before);
   EXPECT_THAT(hidden_entries(dir_.path()), ::testing::IsEmpty());
@@ -208,8 +211,8 @@ TEST_F(InterruptCli, EvaluateLabelsStopsOnCtrlC) {
   // ~60 s uninterrupted on 2 cores; signalled after 1 s of CPU.
   semantics::test_util::write_synthetic_dataset(dir_ / "data", 12, 3, {320, 240});
   Process run({"evaluate", "labels", "--dataset", (dir_ / "data").string(), "--descriptor", "all", "--json",
-           (dir_ / "labels.json").string()},
-          logs(), "labels");
+               (dir_ / "labels.json").string()},
+              logs(), "labels");
   EXPECT_EQ(stop(run, SIGINT, 1.0), 130) << run.err();
   EXPECT_FALSE(fs::exists(dir_ / "labels.json"));
   EXPECT_THAT(hidden_entries(dir_.path()), ::testing::IsEmpty());
@@ -221,16 +224,19 @@ TEST_F(InterruptCli, EvaluateLabelsStopsOnCtrlC) {
 TEST_F(InterruptCli, SynthIsLockedAndStopsOnHangup) {
   const fs::path scene = test::source_dir() / "configs" / "scenes" / "demo.yaml";
   const fs::path out = dir_ / "runs" / "seq";
-  Process earlier({"synth", "--scene", scene.string(), "--frames", "2", "--resolution", "160x120", "--out", out.string()},
-              logs(), "earlier");
+  Process earlier(
+      {"synth", "--scene", scene.string(), "--frames", "2", "--resolution", "160x120", "--out", out.string()}, logs(),
+      "earlier");
   ASSERT_EQ(earlier.exit_code(120), 0) << earlier.err();
   const auto before = snapshot(out);
 
-  Process first({"synth", "--scene", scene.string(), "--frames", "150", "--resolution", "320x240", "--out", out.string()},
-            logs(), "first");
+  Process first(
+      {"synth", "--scene", scene.string(), "--frames", "150", "--resolution", "320x240", "--out", out.string()}, logs(),
+      "first");
   ASSERT_TRUE(wait_until([&] { return !first.running() || fs::exists(dir_ / "runs" / ".seq.lock"); }, 60));
-  Process second({"synth", "--scene", scene.string(), "--frames", "2", "--resolution", "160x120", "--out", out.string()},
-             logs(), "second");
+  Process second(
+      {"synth", "--scene", scene.string(), "--frames", "2", "--resolution", "160x120", "--out", out.string()}, logs(),
+      "second");
   EXPECT_EQ(second.exit_code(60), 1) << second.err();
   const std::string refused = second.err();
   EXPECT_THAT(refused, HasSubstr("another facadeslam run (process " + std::to_string(first.pid()) +
@@ -248,12 +254,12 @@ TEST_F(InterruptCli, SynthIsLockedAndStopsOnHangup) {
 TEST_F(InterruptCli, ReplayStopsOnSigtermWithCompleteOutputs) {
   const fs::path scene = test::source_dir() / "configs" / "scenes" / "demo.yaml";
   Process synth({"synth", "--scene", scene.string(), "--frames", "60", "--resolution", "320x240", "--out",
-             (dir_ / "seq").string()},
-            logs(), "synth");
+                 (dir_ / "seq").string()},
+                logs(), "synth");
   ASSERT_EQ(synth.exit_code(300), 0) << synth.err();
   Process replay({"replay", (dir_ / "seq").string(), "--semantics", "off", "--loop", "100", "--render",
-              (dir_ / "ar").string(), "--render-every", "25", "--out", (dir_ / "out").string()},
-             logs(), "replay");
+                  (dir_ / "ar").string(), "--render-every", "25", "--out", (dir_ / "out").string()},
+                 logs(), "replay");
   EXPECT_EQ(stop(replay, SIGTERM, 2.0), 143) << replay.err();
   const std::string report = test::read_file_text(dir_ / "out" / "report.json");
   EXPECT_THAT(report, HasSubstr("\"interrupted\": true"));

@@ -24,8 +24,8 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using semantics::cat;
+using ::testing::HasSubstr;
 
 class OptimiseCli : public ::testing::Test {
  protected:
@@ -44,11 +44,11 @@ class OptimiseCli : public ::testing::Test {
     return nlohmann::json::parse(test::read_file_text(run / "generation-002.json")).at("ga");
   }
   test::CliResult optimise(const fs::path& out, const std::string& more = "") {
-    return test::run_cli(FACADESLAM_BINARY,
-                         cat("-q optimise --dataset ", test::shell_quoted(data().string()), " --out ",
-                             test::shell_quoted(out.string()), " --config ", test::shell_quoted(config().string()),
-                             " --seed 4 --no-model ", more),
-                         scratch());
+    return test::run_cli(
+        FACADESLAM_BINARY,
+        cat("-q optimise --dataset ", test::shell_quoted(data().string()), " --out ", test::shell_quoted(out.string()),
+            " --config ", test::shell_quoted(config().string()), " --seed 4 --no-model ", more),
+        scratch());
   }
   test::TempDir dir_;
 };

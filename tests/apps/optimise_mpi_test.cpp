@@ -43,14 +43,14 @@ TEST(OptimiseMpi, ThreeRanksGiveTheThreadedRunsResult) {
                test::shell_quoted(out.string()), " --config ", test::shell_quoted((dir / "tiny.yaml").string()),
                " --seed 4 --no-model");
   };
-  const test::CliResult threaded = test::run_cli(FACADESLAM_BINARY, arguments(dir / "threaded") + " --workers 2",
-                                                 dir / "scratch");
+  const test::CliResult threaded =
+      test::run_cli(FACADESLAM_BINARY, arguments(dir / "threaded") + " --workers 2", dir / "scratch");
   ASSERT_EQ(threaded.exit_code, 0) << threaded.err;
   // Containers often run as root, which mpirun refuses without these.
   const std::string command = cat("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ", FACADESLAM_MPIEXEC,
                                   " -np 3 --oversubscribe ", test::shell_quoted(FACADESLAM_BINARY));
-  const test::CliResult mpi = test::run_cli("/bin/sh", "-c " + test::shell_quoted(command + " " + arguments(dir / "mpi")),
-                                            dir / "scratch");
+  const test::CliResult mpi =
+      test::run_cli("/bin/sh", "-c " + test::shell_quoted(command + " " + arguments(dir / "mpi")), dir / "scratch");
   ASSERT_EQ(mpi.exit_code, 0) << mpi.err;
   for (const char* file : {"best.genome", "fitness.json", "split.json"})
     EXPECT_EQ(test::read_file_text(dir / "threaded" / file), test::read_file_text(dir / "mpi" / file)) << file;

@@ -19,14 +19,14 @@ namespace facadeslam::test {
 
 // configs/optimise.yaml with each top-level `key: value` line of `sizes`
 // replaced (a key the file lacks fails the test: the file changed shape).
-inline std::string scaled_down_shipped_config(
-    const std::vector<std::pair<std::string, std::string>>& sizes = {{"population", "4"},
-                                                                     {"generations", "3"},
-                                                                     {"max_train_images", "6"},
-                                                                     {"max_validation_images", "2"},
-                                                                     {"max_samples", "2000"},
-                                                                     {"max_trees", "8"},
-                                                                     {"max_depth", "8"}}) {
+inline std::string scaled_down_shipped_config(const std::vector<std::pair<std::string, std::string>>& sizes = {
+                                                  {"population", "4"},
+                                                  {"generations", "3"},
+                                                  {"max_train_images", "6"},
+                                                  {"max_validation_images", "2"},
+                                                  {"max_samples", "2000"},
+                                                  {"max_trees", "8"},
+                                                  {"max_depth", "8"}}) {
   std::istringstream in(read_file_text(source_dir() / "configs" / "optimise.yaml"));
   std::string text, line;
   std::vector<bool> found(sizes.size(), false);

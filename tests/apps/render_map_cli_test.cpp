@@ -28,7 +28,8 @@ class RenderMapCli : public ::testing::Test {
     // that walk along x looking along +z, upright (y down): our maps' frame.
     std::string body;
     int n = 0;
-    const auto add = [&](float x, float y, float z, std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t label) {
+    const auto add = [&](float x, float y, float z, std::uint8_t r, std::uint8_t g, std::uint8_t b,
+                         std::uint8_t label) {
       const float xyz[] = {x, y, z}, confidence = 0.5f;
       char bytes[20];
       std::memcpy(bytes, xyz, 12);
@@ -44,7 +45,8 @@ class RenderMapCli : public ::testing::Test {
       for (int j = 0; j < 10; ++j) add(0.1f * i, 1.5f, 1.f + 0.4f * j, 128, 64, 0, 5);
     const std::string header =
         "ply\nformat binary_little_endian 1.0\ncomment class 1 building 128 0 0\ncomment class 5 road 128 64 0\n"
-        "element vertex " + std::to_string(n) +
+        "element vertex " +
+        std::to_string(n) +
         "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\n"
         "property uchar blue\nproperty uchar label\nproperty float confidence\nend_header\n";
     test::write_text(ply(), header + body);
@@ -63,9 +65,9 @@ class RenderMapCli : public ::testing::Test {
 
 TEST_F(RenderMapCli, WritesAPngOfTheAskedSizeWithTheMapOnIt) {
   for (const char* view : {"oblique", "top"}) {
-    const auto r = run("render-map --map-ply " + quoted(ply()) + " --keyframes " + quoted(keyframes()) +
-                       " --trajectory " + quoted(keyframes()) + " --out " + quoted(png()) + " --size 320x200 --view " +
-                       view);
+    const auto r =
+        run("render-map --map-ply " + quoted(ply()) + " --keyframes " + quoted(keyframes()) + " --trajectory " +
+            quoted(keyframes()) + " --out " + quoted(png()) + " --size 320x200 --view " + view);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("800 points, 5 keyframes, 5 trajectory poses"));
     const cv::Mat image = cv::imread(png().string(), cv::IMREAD_UNCHANGED);

@@ -30,7 +30,6 @@ std::string quoted(const fs::path& p) { return test::shell_quoted(p.string()); }
 
 fs::path synthetic_camera() { return test::source_dir() / "configs" / "camera" / "synthetic-640x480.yaml"; }
 
-
 class ReplayCli : public ::testing::Test {
  protected:
   void SetUp() override { fs::create_directories(scratch()); }
@@ -320,7 +319,11 @@ TEST_F(ReplayCli, SemanticsLabelTheMapAndAMissingModelFailsFirst) {
   const fs::path sequence = render_demo("demo", 40);
   const fs::path model = test::source_dir() / "models" / "default.fsmodel";
   std::string on = "-q replay ";
-  on.append(quoted(sequence)).append(" --sync --model ").append(quoted(model)).append(" --out ").append(quoted(dir_ / "on"));
+  on.append(quoted(sequence))
+      .append(" --sync --model ")
+      .append(quoted(model))
+      .append(" --out ")
+      .append(quoted(dir_ / "on"));
   const test::CliResult r = run(on);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = test::read_file_text(dir_ / "on" / "report.json");

@@ -21,8 +21,8 @@
 namespace facadeslam {
 namespace {
 
-using ::testing::HasSubstr;
 using semantics::cat;
+using ::testing::HasSubstr;
 
 class TrainCli : public test::DatasetCliTest {
  protected:
@@ -53,8 +53,8 @@ TEST_F(TrainCli, TrainsAModelThatEvaluateLabelsTestsWithoutRetraining) {
   EXPECT_THAT(summary, HasSubstr(semantics::Genome::thesis_best().to_string()));
 
   const auto tested_json = dir_ / "out/tested.json";
-  const auto t = run(cat("-q evaluate labels --dataset ", q(data()), " --step 7 --model ", q(model()), " --json ",
-                         q(tested_json)));
+  const auto t = run(
+      cat("-q evaluate labels --dataset ", q(data()), " --step 7 --model ", q(model()), " --json ", q(tested_json)));
   ASSERT_EQ(t.exit_code, 0) << t.err;
   const std::string tested = test::read_file_text(tested_json);
   EXPECT_GT(test::json_number(tested, "overall_recognition_rate"), 0.8);

@@ -91,12 +91,11 @@ const Case kCases[] = {
      "000001.png"},
     {"frames_mixed_size", "replay {shared}/mixed_size --camera {cam} --semantics off --out {out}", 1,
      "image is 320x240 but the sequence's first frame"},
-    {"frames_mixed_size_keeps_the_old_output",
-     "replay {shared}/mixed_size --camera {cam} --semantics off --out {old}", 1, "image is 320x240",
-     Outputs::untouched},
+    {"frames_mixed_size_keeps_the_old_output", "replay {shared}/mixed_size --camera {cam} --semantics off --out {old}",
+     1, "image is 320x240", Outputs::untouched},
     {"frames_corrupt_skipped_are_counted",
-     "replay {shared}/zero_byte --camera {cam} --semantics off --sync --out {case}/counted", 3,
-     "never initialised", Outputs::absent, "1 corrupt frames skipped", "counted"},
+     "replay {shared}/zero_byte --camera {cam} --semantics off --sync --out {case}/counted", 3, "never initialised",
+     Outputs::absent, "1 corrupt frames skipped", "counted"},
     // synth.json against what the folder holds (point 2)
     {"sequence_manifest_mismatch", "replay {shared}/mixed_manifest --semantics off --out {out}", 1,
      "synth.json: says 5 frames but"},
@@ -108,10 +107,8 @@ const Case kCases[] = {
     {"camera_nan_fx", "replay {seq} --camera {corpus}/camera_yaml/nan_fx.yaml --out {out}", 1, "nan_fx.yaml"},
     {"camera_negative_width", "replay {seq} --camera {corpus}/camera_yaml/negative_width.yaml --out {out}", 1,
      "negative_width.yaml"},
-    {"camera_huge_size", "replay {seq} --camera {corpus}/camera_yaml/huge_size.yaml --out {out}", 1,
-     "huge_size.yaml"},
-    {"camera_unknown_model", "replay {seq} --camera {corpus}/camera_yaml/unknown_model.yaml --out {out}", 1,
-     "fisheye"},
+    {"camera_huge_size", "replay {seq} --camera {corpus}/camera_yaml/huge_size.yaml --out {out}", 1, "huge_size.yaml"},
+    {"camera_unknown_model", "replay {seq} --camera {corpus}/camera_yaml/unknown_model.yaml --out {out}", 1, "fisheye"},
     {"camera_short_distortion", "replay {seq} --camera {corpus}/camera_yaml/short_distortion.yaml --out {out}", 1,
      "short_distortion.yaml"},
     {"camera_text_fx", "replay {seq} --camera {corpus}/camera_yaml/text_fx.yaml --out {out}", 1, "text_fx.yaml"},
@@ -139,8 +136,8 @@ const Case kCases[] = {
      "replay {seq} --semantics-config {corpus}/semantics_config/unknown_key.yaml --out {out}", 1, "modle"},
     {"semantics_config_unknown_class",
      "replay {seq} --semantics-config {corpus}/semantics_config/unknown_class.yaml --out {out}", 1, "spaceship"},
-    {"semantics_config_not_yaml",
-     "replay {seq} --semantics-config {corpus}/semantics_config/not_yaml.yaml --out {out}", 1, "not_yaml.yaml"},
+    {"semantics_config_not_yaml", "replay {seq} --semantics-config {corpus}/semantics_config/not_yaml.yaml --out {out}",
+     1, "not_yaml.yaml"},
     // Map files (hostile values with a valid checksum: tests/core/map/map_io_test.cpp)
     {"map_empty", "replay {seq} --load-map {corpus}/map/empty.fslmap --out {out}", 1, "empty.fslmap"},
     {"map_random", "replay {seq} --load-map {corpus}/map/random.fslmap --out {out}", 1, "random.fslmap"},
@@ -173,10 +170,8 @@ const Case kCases[] = {
      "a model trained on grey images, tested on colour ones (add --grey)"},
     {"model_truncated", "replay {seq} --model {corpus}/model/truncated.fsmodel --out {out}", 1,
      "truncated or damaged model file"},
-    {"model_huge_payload", "replay {seq} --model {corpus}/model/huge_payload.fsmodel --out {out}", 1,
-     "is implausible"},
-    {"model_flipped_byte", "replay {seq} --model {shared}/flipped_byte.fsmodel --out {out}", 1,
-     "flipped_byte.fsmodel"},
+    {"model_huge_payload", "replay {seq} --model {corpus}/model/huge_payload.fsmodel --out {out}", 1, "is implausible"},
+    {"model_flipped_byte", "replay {seq} --model {shared}/flipped_byte.fsmodel --out {out}", 1, "flipped_byte.fsmodel"},
     {"model_evaluate_labels", "evaluate labels --dataset {data} --model {corpus}/model/random.fsmodel", 1,
      "not a facadeslam model file"},
     // Scene YAML (synth): nothing written
@@ -206,8 +201,7 @@ const Case kCases[] = {
      "evaluate trajectory --gt {corpus}/trajectory/garbage_bytes.txt --est {corpus}/trajectory/good.txt", 1,
      "garbage_bytes.txt"},
     {"trajectory_nan_pose",
-     "evaluate trajectory --gt {corpus}/trajectory/nan_pose.txt --est {corpus}/trajectory/good.txt", 1,
-     "nan_pose.txt"},
+     "evaluate trajectory --gt {corpus}/trajectory/nan_pose.txt --est {corpus}/trajectory/good.txt", 1, "nan_pose.txt"},
     {"trajectory_zero_quaternion",
      "evaluate trajectory --gt {corpus}/trajectory/zero_quaternion.txt --est {corpus}/trajectory/good.txt", 1,
      "zero_quaternion.txt"},
@@ -222,8 +216,8 @@ const Case kCases[] = {
      "evaluate trajectory --gt {corpus}/trajectory/kitti_good.txt --est {corpus}/trajectory/kitti_nan.txt", 1,
      "kitti_nan.txt:3: expected 12 numbers (row-major 3x4 pose [R | t]); 'nan' is not a finite number"},
     {"trajectory_kitti_non_numeric",
-     "evaluate trajectory --gt {corpus}/trajectory/kitti_non_numeric.txt --est {corpus}/trajectory/kitti_good.txt",
-     1, "kitti_non_numeric.txt:2: expected 12 numbers (row-major 3x4 pose [R | t]); 'zero' is not a finite number"},
+     "evaluate trajectory --gt {corpus}/trajectory/kitti_non_numeric.txt --est {corpus}/trajectory/kitti_good.txt", 1,
+     "kitti_non_numeric.txt:2: expected 12 numbers (row-major 3x4 pose [R | t]); 'zero' is not a finite number"},
     {"trajectory_kitti_fewer_times_than_poses",
      "evaluate trajectory --gt {corpus}/trajectory/kitti_good.txt --gt-times {corpus}/trajectory/kitti_times_short.txt "
      "--est {corpus}/trajectory/good.txt",
@@ -232,16 +226,15 @@ const Case kCases[] = {
     {"trajectory_kitti_without_times_against_tum",
      "evaluate trajectory --gt {corpus}/trajectory/kitti_good.txt --est {corpus}/trajectory/good.txt", 2,
      "--gt-times: "},
-    {"replay_gt_kitti_fewer_poses_than_frames",
-     "replay {seq} --gt {corpus}/trajectory/kitti_two_poses.txt --out {out}", 1,
-     "kitti_two_poses.txt: has 2 poses but the sequence has frame 2"},
+    {"replay_gt_kitti_fewer_poses_than_frames", "replay {seq} --gt {corpus}/trajectory/kitti_two_poses.txt --out {out}",
+     1, "kitti_two_poses.txt: has 2 poses but the sequence has frame 2"},
     {"replay_gt_one_pose", "replay {seq} --gt {corpus}/trajectory/one_pose.txt --out {out}", 1, "one_pose.txt"},
     {"replay_gt_garbage", "replay {seq} --gt {corpus}/trajectory/garbage_bytes.txt --out {out}", 1,
      "garbage_bytes.txt"},
     {"replay_gt_missing", "replay {seq} --gt {case}/missing.txt --out {out}", 1, "missing.txt"},
     // Genome files (exit 1) and strings (a bad command line, exit 2)
-    {"genome_file_bad_character", "train --dataset {data} --genome {corpus}/genome/bad_character.txt --out {out}/m.fsmodel",
-     1, "bad_character.txt"},
+    {"genome_file_bad_character",
+     "train --dataset {data} --genome {corpus}/genome/bad_character.txt --out {out}/m.fsmodel", 1, "bad_character.txt"},
     {"genome_file_too_short", "train --dataset {data} --genome {corpus}/genome/too_short.txt --out {out}/m.fsmodel", 1,
      "too_short.txt"},
     {"genome_file_binary", "train --dataset {data} --genome {corpus}/genome/binary.txt --out {out}/m.fsmodel", 1,
@@ -273,8 +266,7 @@ const Case kCases[] = {
     {"out_replay_is_a_file", "replay {seq} --out {file}", 1, "it is a file"},
     {"out_replay_folder_of_other_files", "replay {seq} --semantics off --out {corpus}", 1,
      "must be new, empty or an earlier replay output"},
-    {"out_synth_is_a_file", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {file}", 1,
-     "it is a file"},
+    {"out_synth_is_a_file", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {file}", 1, "it is a file"},
     {"out_synth_folder_of_other_files", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {old}", 1,
      "must be new, empty or an earlier synth output", Outputs::untouched},
     {"out_labels_json_is_a_folder", "evaluate labels --dataset {data} --json {case}", 1, "is a folder"},
@@ -283,8 +275,8 @@ const Case kCases[] = {
     {"out_labels_model_out_unwritable", "evaluate labels --dataset {data} --model-out {file}/m.fsmodel", 1,
      "m.fsmodel"},
     {"out_invariance_plot_unwritable", "evaluate invariance --images {data}/images --plot {file}/p.png", 1, "p.png"},
-    {"out_calibrate_plot_unwritable",
-     "calibrate --images {data}/images --out {out}/camera.yaml --plot {file}/p.png", 1, "p.png"},
+    {"out_calibrate_plot_unwritable", "calibrate --images {data}/images --out {out}/camera.yaml --plot {file}/p.png", 1,
+     "p.png"},
     {"out_render_map_unwritable", "render-map --map-ply {file} --out {file}/x.png", 1, "x.png"},
     {"out_train_unwritable", "train --dataset {data} --out {file}/m.fsmodel", 1, "m.fsmodel"},
     {"out_optimise_is_a_file", "optimise --dataset {data} --out {file}", 1, "it is a file"},
@@ -302,18 +294,19 @@ const Case kCases[] = {
      "--out holds the input SEQUENCE"},
     {"out_synth_folder_of_user_files", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {mine}", 1,
      "--out holds '"},
-    {"out_synth_plain_text_manifest", "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {case}/plain-synth",
-     1, "'synth.json', which is not a synth manifest"},
+    {"out_synth_plain_text_manifest",
+     "synth --scene {root}/configs/scenes/demo.yaml --frames 3 --out {case}/plain-synth", 1,
+     "'synth.json', which is not a synth manifest"},
     // calibrate: --out a .yaml only, never a user's camera file, never among
     // the images (its plot beside it would be read as an image next time).
     {"out_calibrate_not_yaml", "calibrate --images {mine}/photos --out {mine}/thesis.tex", 1,
      "expected a camera file name ending in .yaml"},
     {"out_calibrate_user_camera_file", "calibrate --images {mine}/photos --out {mine}/camera.yaml", 1,
      "not a camera YAML written by facadeslam calibrate"},
-    {"out_calibrate_plot_onto_an_image", "calibrate --images {mine}/photos --out {case}/c.yaml --plot {mine}/photos/a.png",
-     1, "--plot lies in --images"},
-    {"out_calibrate_json_onto_an_image", "calibrate --images {mine}/photos --out {case}/c.yaml --json {mine}/photos/b.png",
-     1, "--json lies in --images"},
+    {"out_calibrate_plot_onto_an_image",
+     "calibrate --images {mine}/photos --out {case}/c.yaml --plot {mine}/photos/a.png", 1, "--plot lies in --images"},
+    {"out_calibrate_json_onto_an_image",
+     "calibrate --images {mine}/photos --out {case}/c.yaml --json {mine}/photos/b.png", 1, "--json lies in --images"},
     {"out_calibrate_into_the_images", "calibrate --images {mine}/photos --out {mine}/photos/c.yaml", 1,
      "--out lies in --images"},
     {"out_calibrate_json_is_out", "calibrate --images {mine}/photos --out {case}/c.yaml --json {case}/c.yaml", 1,
@@ -407,7 +400,8 @@ const Case kCases[] = {
      "'../frames/a.png' leads outside"},
     // ... read on purpose: the frames are then read (and are placeholders).
     {"rgb_txt_outside_frames_allowed",
-     "--allow-outside-paths replay {corpus}/rgb_txt/sub/outside_frames.txt --camera {cam} --on-corrupt stop --out {out}",
+     "--allow-outside-paths replay {corpus}/rgb_txt/sub/outside_frames.txt --camera {cam} --on-corrupt stop --out "
+     "{out}",
      1, "frames/a.png"},
     {"scene_camera_not_yaml", "synth --scene {corpus}/scene_yaml/camera_outside.yaml --out {out}", 1,
      "key 'camera': expected a camera YAML file (.yaml or .yml; pass --allow-outside-paths to read it anyway)"},
@@ -417,13 +411,14 @@ const Case kCases[] = {
      "expected an image file (.jpg"},
     {"dataset_train_txt_outside", "train --dataset {shared}/outside_names --out {out}/m.fsmodel", 1,
      "train.txt: line 2: '../../../../../../../../etc/hostname' leads outside"},
-    {"dataset_test_txt_outside", "evaluate labels --dataset {shared}/outside_names --model {root}/models/default.fsmodel",
-     1, "test.txt: line 1: '/etc/hostname' leads outside"},
+    {"dataset_test_txt_outside",
+     "evaluate labels --dataset {shared}/outside_names --model {root}/models/default.fsmodel", 1,
+     "test.txt: line 1: '/etc/hostname' leads outside"},
     // --gt-labels missing a later frame fails before the first frame.
-    {"gt_labels_missing_a_later_frame", "replay {seq} --semantics off --gt-labels {shared}/labels_missing_last --out {out}",
-     1, "the ground-truth label image of frame 000002.png does not exist"},
+    {"gt_labels_missing_a_later_frame",
+     "replay {seq} --semantics off --gt-labels {shared}/labels_missing_last --out {out}", 1,
+     "the ground-truth label image of frame 000002.png does not exist"},
 };
-
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
   fs::create_directories(path.parent_path());
@@ -546,8 +541,10 @@ std::map<std::string, std::string> signature(const fs::path& folder) {
     const fs::file_status status = entry.symlink_status();
     std::string what = std::to_string(static_cast<int>(status.type()));
     if (fs::is_regular_file(status))
-      what.append(" ").append(std::to_string(entry.file_size())).append(" ").append(
-          std::to_string(entry.last_write_time().time_since_epoch().count()));
+      what.append(" ")
+          .append(std::to_string(entry.file_size()))
+          .append(" ")
+          .append(std::to_string(entry.last_write_time().time_since_epoch().count()));
     files[fs::relative(entry.path(), folder).string()] = what;
   }
   return files;
@@ -595,8 +592,9 @@ TEST_P(BadInput, FailsWithOneClearLineAndLeavesTheOutputs) {
   test::write_text(dir / "a-file", "not a folder\n");
   fs::create_directories(old);
   // An earlier replay's output as the output policy recognises it (core/util/output_policy.hpp).
-  test::write_text(old / "report.json", "{\"sequence\": \"old\", \"camera\": \"c.yaml\", \"mode\": \"synchronous\", "
-                                        "\"frames\": 3, \"initialised\": false}\n");
+  test::write_text(old / "report.json",
+                   "{\"sequence\": \"old\", \"camera\": \"c.yaml\", \"mode\": \"synchronous\", "
+                   "\"frames\": 3, \"initialised\": false}\n");
   test::write_text(old / "trajectory.txt", "0 0 0 0 0 0 0 1\n");
   const auto before = snapshot(old);
   write_user_files(dir.path(), c.arguments);

@@ -146,8 +146,8 @@ TEST(BoardDetection, SubpixelWindowFollowsCornerSpacing) {
     return corners;
   };
   EXPECT_EQ(subpixel_half_window(grid(100, 100), board), 11);  // capped
-  EXPECT_EQ(subpixel_half_window(grid(30, 20), board), 7);      // 0.35 x the shorter spacing
-  EXPECT_EQ(subpixel_half_window(grid(5, 5), board), 3);        // floor
+  EXPECT_EQ(subpixel_half_window(grid(30, 20), board), 7);     // 0.35 x the shorter spacing
+  EXPECT_EQ(subpixel_half_window(grid(5, 5), board), 3);       // floor
 }
 
 TEST(BoardDetection, NoBoardInAPlainImage) {

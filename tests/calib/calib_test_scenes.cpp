@@ -27,7 +27,9 @@ Camera true_pinhole() {
   return Camera(640, 480, m);
 }
 
-Camera true_atan() { return Camera(640, 480, AtanCamera{.fx = 410.0, .fy = 408.0, .cx = 318.0, .cy = 242.0, .w = 0.9}); }
+Camera true_atan() {
+  return Camera(640, 480, AtanCamera{.fx = 410.0, .fy = 408.0, .cx = 318.0, .cy = 242.0, .w = 0.9});
+}
 
 std::vector<SE3d> scene_poses(const Camera& camera) { return varied_board_poses(camera, test_board(), 10); }
 

@@ -40,7 +40,6 @@ void write_views(const std::filesystem::path& folder, const std::vector<cv::Mat>
 // Views whose corners are the exact projections of the board at `poses`,
 // plus Gaussian noise of `noise_px` (fixed seed): calibration input without
 // any image (fast tests of the fits and the reports).
-std::vector<calib::AcceptedView> projected_views(const Camera& camera, const std::vector<SE3d>& poses,
-                                                 double noise_px);
+std::vector<calib::AcceptedView> projected_views(const Camera& camera, const std::vector<SE3d>& poses, double noise_px);
 
 }  // namespace facadeslam::test

@@ -115,7 +115,8 @@ TEST_F(CalibrateCommand, NoBoardInAnyImageExitsWithOne) {
   const auto empty_walls = dir_ / "walls";
   std::filesystem::create_directory(empty_walls);
   for (int i = 0; i < 3; ++i)
-    test::write_png(empty_walls / ("wall" + std::to_string(i) + ".png"), cv::Mat(240, 320, CV_8UC1, cv::Scalar(60 * i)));
+    test::write_png(empty_walls / ("wall" + std::to_string(i) + ".png"),
+                    cv::Mat(240, 320, CV_8UC1, cv::Scalar(60 * i)));
   const CommandResult r = calibrate(dir_, "--images " + quoted(empty_walls) + " --out " + quoted(dir_ / "c.yaml"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("no image of 3 contained a 9x6 board"));
@@ -137,7 +138,8 @@ TEST_F(CalibrateCommand, MixedImageSizesExitWithOne) {
   test::write_png(images_ / "view_05_small.png", small);
   const CommandResult r = calibrate(dir_, "--images " + quoted(images_) + " --out " + quoted(dir_ / "c.yaml"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_THAT(r.err, HasSubstr("view_05_small.png: image is 320x240 pixels, but the first image (view_00.png) is 640x480"));
+  EXPECT_THAT(r.err,
+              HasSubstr("view_05_small.png: image is 320x240 pixels, but the first image (view_00.png) is 640x480"));
 }
 
 TEST_F(CalibrateCommand, MissingFolderExitsWithOne) {

@@ -152,8 +152,8 @@ TEST(AtanFit, RecoversTheCameraFromExactCorners) {
 TEST(AtanFit, NoisyCornersStillGiveTheCameraClosely) {
   const Camera truth = test::true_atan();
   const auto views = test::projected_views(truth, test::scene_poses(truth), 0.1);
-  const CalibrationResult r = calibrate_atan(views, calibrate_pinhole(views, {640, 480}, test::test_board()),
-                                             test::test_board());
+  const CalibrationResult r =
+      calibrate_atan(views, calibrate_pinhole(views, {640, 480}, test::test_board()), test::test_board());
   EXPECT_NEAR(r.camera.fx(), 410.0, 0.005 * 410.0);
   EXPECT_NEAR(r.camera.fy(), 408.0, 0.005 * 408.0);
   EXPECT_NEAR(std::get<AtanCamera>(r.camera.model()).w, 0.9, 0.01);

@@ -27,8 +27,12 @@ OpenCvReference read_reference(const std::filesystem::path& file) {
   EXPECT_TRUE(storage.isOpened()) << file;
   cv::Mat K;
   storage["camera_matrix"] >> K;
-  return {K.at<double>(0, 0), K.at<double>(1, 1), K.at<double>(0, 2), K.at<double>(1, 2),
-          static_cast<double>(storage["avg_reprojection_error"]), static_cast<int>(storage["nframes"])};
+  return {K.at<double>(0, 0),
+          K.at<double>(1, 1),
+          K.at<double>(0, 2),
+          K.at<double>(1, 2),
+          static_cast<double>(storage["avg_reprojection_error"]),
+          static_cast<int>(storage["nframes"])};
 }
 
 // left01.jpg ... left14.jpg (not left.jpg, which shows no board) copied to

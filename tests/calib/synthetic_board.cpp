@@ -25,8 +25,8 @@ double board_intensity(const calib::BoardSpec& board, double x, double y) {
 // A deterministic value in [0, 1) per pixel and sample (a 64-bit integer
 // hash, SplitMix64's finaliser), so renders are identical on every run.
 double jitter(int x, int y, int k) {
-  std::uint64_t z = (static_cast<std::uint64_t>(y) << 40) ^ (static_cast<std::uint64_t>(x) << 16) ^
-                    static_cast<std::uint64_t>(k);
+  std::uint64_t z =
+      (static_cast<std::uint64_t>(y) << 40) ^ (static_cast<std::uint64_t>(x) << 16) ^ static_cast<std::uint64_t>(k);
   z += 0x9e3779b97f4a7c15ULL;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
@@ -93,17 +93,17 @@ std::vector<SE3d> varied_board_poses(const Camera& camera, const calib::BoardSpe
     double u, v, tilt_x, tilt_y, roll;
   };
   constexpr std::array<Layout, 12> kLayouts = {{{0.50, 0.50, 0, 25, 0},
-                                               {0.30, 0.32, 20, -20, 10},
-                                               {0.70, 0.32, 20, 25, -10},
-                                               {0.30, 0.68, -25, -20, -5},
-                                               {0.70, 0.68, -20, 20, 5},
-                                               {0.50, 0.30, 35, 0, 15},
-                                               {0.50, 0.70, -30, 5, -15},
-                                               {0.28, 0.50, 5, -35, 20},
-                                               {0.72, 0.50, -5, 30, -20},
-                                               {0.50, 0.50, 15, -15, 40},
-                                               {0.40, 0.42, -15, 10, -30},
-                                               {0.60, 0.58, 10, -10, 25}}};
+                                                {0.30, 0.32, 20, -20, 10},
+                                                {0.70, 0.32, 20, 25, -10},
+                                                {0.30, 0.68, -25, -20, -5},
+                                                {0.70, 0.68, -20, 20, 5},
+                                                {0.50, 0.30, 35, 0, 15},
+                                                {0.50, 0.70, -30, 5, -15},
+                                                {0.28, 0.50, 5, -35, 20},
+                                                {0.72, 0.50, -5, 30, -20},
+                                                {0.50, 0.50, 15, -15, 40},
+                                                {0.40, 0.42, -15, 10, -30},
+                                                {0.60, 0.58, 10, -10, 25}}};
   const double deg = std::numbers::pi / 180.0;
   const double board_width = (board.cols + 3) * board.square;  // squares plus the margin
   const double depth = camera.fx() * board_width / (width_fraction * camera.width());

@@ -15,7 +15,7 @@ SE3d camera_at(const Eigen::Vector3d& centre, double heading_deg) {
   const Eigen::Vector3d forward(std::cos(h), std::sin(h), 0.0), up(0, 0, 1);
   Eigen::Matrix3d R_w_c;
   R_w_c.col(2) = forward;
-  R_w_c.col(1) = -up;                   // image y points down
+  R_w_c.col(1) = -up;  // image y points down
   R_w_c.col(0) = R_w_c.col(1).cross(forward);
   const SE3d T_w_c(R_w_c, centre);
   return T_w_c.inverse();
@@ -36,8 +36,7 @@ TEST(EpipolarPartner, WalkingTakesTheNearestKeyframe) {
 TEST(EpipolarPartner, TurningOnTheSpotSkipsKeyframesWithoutBaseline) {
   // Keyframes 0 and 1 stand where the new one stands (turning on the spot);
   // keyframe 2 is 1 m back along the walk, looking 30 degrees away.
-  const std::vector<SE3d> others = {camera_at({0, 0, 0}, 0), camera_at({0.01, 0, 0}, 15),
-                                    camera_at({-1, 0, 0}, 0)};
+  const std::vector<SE3d> others = {camera_at({0, 0, 0}, 0), camera_at({0.01, 0, 0}, 15), camera_at({-1, 0, 0}, 0)};
   EXPECT_EQ(choose_epipolar_partner(camera_at({0, 0, 0}, 30), kDepth, others, {}), 2u);
 }
 
@@ -84,10 +83,11 @@ TEST(EpipolarPartner, MovingForwardIsMotionAlongTheOpticalAxis) {
   // Looking along +x: driving forward from 1 m back, then sideways from 1 m to the right.
   EXPECT_TRUE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({-1, 0, 0}, 0), options));
   EXPECT_TRUE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({-1, -0.15, 0}, 0), options));  // 8.5 degrees off
-  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({-1, -0.5, 0}, 0), options));  // 27 degrees off (a walk looking aside)
-  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({0, -1, 0}, 0), options));    // a walk along facades
-  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({1, 0, 0}, 0), options));     // backing up
-  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 30), camera_at({0, 0, 0}, 0), options));    // turning on the spot
+  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({-1, -0.5, 0}, 0),
+                              options));  // 27 degrees off (a walk looking aside)
+  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({0, -1, 0}, 0), options));  // a walk along facades
+  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 0), camera_at({1, 0, 0}, 0), options));   // backing up
+  EXPECT_FALSE(moving_forward(camera_at({0, 0, 0}, 30), camera_at({0, 0, 0}, 0), options));  // turning on the spot
 }
 
 }  // namespace

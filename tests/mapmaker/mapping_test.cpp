@@ -124,8 +124,9 @@ TEST(EpipolarSearch, FindsPointsUnderForwardMotion) {
   int ptam_off = 0, ours_off = 0;
   const int ptam = count(false, false, &ptam_off);
   const int ours = count(true, true, &ours_off);
-  std::printf("[  FIGURES ] forward motion x1.43: PTAM's search %d points (%d off the plane), warped + dense %d (%d off)\n",
-              ptam, ptam_off, ours, ours_off);
+  std::printf(
+      "[  FIGURES ] forward motion x1.43: PTAM's search %d points (%d off the plane), warped + dense %d (%d off)\n",
+      ptam, ptam_off, ours, ours_off);
   EXPECT_GT(ours, ptam + ptam / 5);
   EXPECT_LE(ours_off, ours / 50);
   EXPECT_LT(ours_off, ptam_off);

@@ -35,9 +35,9 @@ Street make_street(int ground, int facade, int clutter, double noise_m, unsigned
   }
   for (int i = 0; i < clutter; ++i)  // between the facades, above the road
     street.emplace_back(along(random), 0.9 * across(random), 0.2 + 3.0 * unit(random));
-  const Eigen::Matrix3d R =
-      (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::AngleAxisd(-0.4, Eigen::Vector3d::UnitX()))
-          .toRotationMatrix();
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) *
+                             Eigen::AngleAxisd(-0.4, Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
   const double scale = 0.137;
   const Eigen::Vector3d offset(2.0, -1.0, 0.5);
   Street out;
@@ -75,8 +75,10 @@ TEST(ArPlaneFinder, RecoversTheGroundThenAFacadeOfAStreet) {
                                        render::ar::angle_between_deg(second->plane, street.right_facade));
   // The facade found is one of the two, not a plane between them.
   const double facade_offset_error =
-      std::min(std::abs(second->plane.offset - street.left_facade.offset * second->plane.normal_w.dot(street.left_facade.normal_w)),
-               std::abs(second->plane.offset - street.right_facade.offset * second->plane.normal_w.dot(street.right_facade.normal_w)));
+      std::min(std::abs(second->plane.offset -
+                        street.left_facade.offset * second->plane.normal_w.dot(street.left_facade.normal_w)),
+               std::abs(second->plane.offset -
+                        street.right_facade.offset * second->plane.normal_w.dot(street.right_facade.normal_w)));
   std::cout << "[ plane ] ground " << ground_error << " deg (" << first->inliers.size() << " inliers), facade "
             << facade_error << " deg (" << second->inliers.size() << " inliers)\n";
   RecordProperty("ground_error_deg", std::to_string(ground_error));

@@ -33,8 +33,10 @@ std::vector<CameraCase> cameras() {
   return {
       {"pinhole", Camera(640, 480, PinholeRadTan{.fx = 520.3, .fy = 498.7, .cx = 331.2, .cy = 228.9})},
       {"radial_tangential",
-       Camera(640, 480, PinholeRadTan{.fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.28, .k2 = 0.09,
-                                      .p1 = 0.001, .p2 = -0.0008})},
+       Camera(
+           640, 480,
+           PinholeRadTan{
+               .fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.28, .k2 = 0.09, .p1 = 0.001, .p2 = -0.0008})},
       {"atan_fov", Camera(640, 480, AtanCamera{.fx = 420, .fy = 421, .cx = 318.9, .cy = 241.3, .w = 0.92})},
   };
 }
@@ -59,7 +61,9 @@ Eigen::Isometry3d diagonal_view(const VirtualObject& cube, double distance, doub
 }
 
 // A grey image: the corners' contrast must come from the object.
-cv::Mat grey_image(const Camera& camera) { return cv::Mat(camera.height(), camera.width(), CV_8UC3, cv::Scalar::all(60)); }
+cv::Mat grey_image(const Camera& camera) {
+  return cv::Mat(camera.height(), camera.width(), CV_8UC3, cv::Scalar::all(60));
+}
 
 struct CornerErrors {
   std::size_t corners = 0;
@@ -118,8 +122,8 @@ TEST_P(ArViewExactness, ObjectCornersSitWhereTheCameraModelProjectsThem) {
   const cv::Mat image = view.render(content, &stats);
   EXPECT_TRUE(stats.object_drawn);
   const CornerErrors e = measure_object_corners(image, c.camera, T_w_c, *content.object);
-  std::cout << "[ ar object ] " << c.name << ": " << e.corners << " corners, mean " << e.mean << " px, max "
-            << e.worst << " px\n";
+  std::cout << "[ ar object ] " << c.name << ": " << e.corners << " corners, mean " << e.mean << " px, max " << e.worst
+            << " px\n";
   RecordProperty("max_corner_error_px", std::to_string(e.worst));
   EXPECT_GE(e.corners, 30u);
   EXPECT_LT(e.worst, 0.5) << c.name;
@@ -175,8 +179,10 @@ INSTANTIATE_TEST_SUITE_P(Cameras, ArViewExactness, ::testing::Range(0, 3),
 // and the first pose, then every frame's render must show its corners where
 // that frame's true pose projects the same world points.
 TEST(ArViewAnchoring, TheObjectStaysPutAsTheCameraMoves) {
-  const Camera camera(640, 480, PinholeRadTan{.fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.2,
-                                               .k2 = 0.05, .p1 = 0.0005, .p2 = -0.0004});
+  const Camera camera(
+      640, 480,
+      PinholeRadTan{
+          .fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.2, .k2 = 0.05, .p1 = 0.0005, .p2 = -0.0004});
   std::vector<Eigen::Vector3d> ground;
   for (int i = 0; i < 30; ++i)
     for (int j = 0; j < 30; ++j) ground.emplace_back(-3.0 + 0.2 * i, -3.0 + 0.2 * j, 0.0);
@@ -221,7 +227,8 @@ TEST(ArView, PointsBehindTheObjectAreNotDrawn) {
   const Eigen::Vector3d centre = content.object->T_w_o * Eigen::Vector3d(0, 0, 0.5);
   // On the line of sight through the cube's centre: before it, inside it,
   // just behind it, far behind it.
-  for (const double t : {0.3, 1.0, 1.4, 2.5}) content.points.push_back({eye + t * (centre - eye), cv::Vec3b(0, 0, 255)});
+  for (const double t : {0.3, 1.0, 1.4, 2.5})
+    content.points.push_back({eye + t * (centre - eye), cv::Vec3b(0, 0, 255)});
   // Beside the cube: seen.
   content.points.push_back({centre + 1.0 * content.T_w_c->linear().col(0), cv::Vec3b(0, 0, 255)});
   render::ar::ArFrameStats stats;
@@ -301,7 +308,8 @@ TEST_P(ArViewExactness, TheSilhouetteIsWithinHalfAPixelOfTheRayCastOne) {
   // densely: distortion bends them) plus a margin; outside it nothing may be
   // drawn. (A whole-image ray cast takes seconds under the sanitizers.)
   double min_x = 1e9, min_y = 1e9, max_x = -1e9, max_y = -1e9;
-  const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                            {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   for (const auto& e : edges)
     for (int i = 0; i <= 64; ++i) {
       const Eigen::Vector3d p_w = k[e[0]] + (i / 64.0) * (k[e[1]] - k[e[0]]);

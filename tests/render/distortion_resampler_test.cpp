@@ -8,8 +8,9 @@ namespace facadeslam::render {
 namespace {
 
 Camera barrel_camera() {
-  return Camera(320, 240, PinholeRadTan{.fx = 260, .fy = 255, .cx = 161.3, .cy = 118.2, .k1 = -0.3, .k2 = 0.1,
-                                        .p1 = 0.001, .p2 = -0.0015});
+  return Camera(
+      320, 240,
+      PinholeRadTan{.fx = 260, .fy = 255, .cx = 161.3, .cy = 118.2, .k1 = -0.3, .k2 = 0.1, .p1 = 0.001, .p2 = -0.0015});
 }
 
 TEST(DistortionResampler, OnlyDistortedCamerasAreResampled) {

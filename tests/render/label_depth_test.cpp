@@ -63,8 +63,8 @@ Agreement compare_with_reference(const Camera& camera, const Eigen::Isometry3d& 
   for (const auto& q : quads) {
     const cv::Mat texture(std::max(q.labels.rows, 4), std::max(q.labels.cols, 4), CV_8UC3, cv::Scalar(90, 90, 90));
     const auto labels = q.labels.empty() ? render::TextureId{} : renderer.add_label_texture(q.labels);
-    scene.meshes.push_back(render::make_textured_quad(q.top_left, q.right, q.down,
-                                                      renderer.add_colour_texture(texture), labels, q.label));
+    scene.meshes.push_back(
+        render::make_textured_quad(q.top_left, q.right, q.down, renderer.add_colour_texture(texture), labels, q.label));
   }
   const auto out = renderer.render(scene, camera, T_w_c);
 
@@ -122,8 +122,10 @@ TEST(LabelDepth, PinholeAgreesWithTheRayCaster) {
 }
 
 TEST(LabelDepth, DistortedCameraAgreesWithTheRayCaster) {
-  const Camera camera(640, 480, PinholeRadTan{.fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.28,
-                                              .k2 = 0.09, .p1 = 0.001, .p2 = -0.0008});
+  const Camera camera(
+      640, 480,
+      PinholeRadTan{
+          .fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.28, .k2 = 0.09, .p1 = 0.001, .p2 = -0.0008});
   const Eigen::Isometry3d T_w_c = test::look_at({1, -2, 1.4}, {12, 4, 2.5});
   // Nearest-pixel resampling moves a sample by up to half a virtual pixel,
   // so the boundary band for labels is wider.

@@ -117,9 +117,8 @@ TEST(MapView, NearerPointsHideFartherOnesAndPointsBehindAreNotDrawn) {
   style.point_size = 7.f;
   style.outline_pixels = 0.f;
   // Drawn far first, then near, then far again: only depth decides.
-  MapViewContent content = content_of(camera, {{{50, 50}, 6.0, {255, 0, 0}},
-                                               {{50, 50}, 3.0, {0, 255, 0}},
-                                               {{50, 50}, 9.0, {0, 0, 255}}});
+  MapViewContent content =
+      content_of(camera, {{{50, 50}, 6.0, {255, 0, 0}}, {{50, 50}, 3.0, {0, 255, 0}}, {{50, 50}, 9.0, {0, 0, 255}}});
   // A point behind the camera that would project into the picture.
   content.points_w.push_back((camera.T_w_c * Eigen::Vector3d(0.1, 0.1, -2.0)).cast<float>());
   content.colours_bgr.emplace_back(1, 2, 3);

@@ -35,13 +35,19 @@ std::vector<MarkerCase> cases() {
       {"frontal", synthetic(), {-2.6, 0, 0}, 0.0},
       {"oblique", synthetic(), {-1.6, 1.3, 0.9}, 0.2},
       {"off_centre_non_square",
-       Camera(640, 480, PinholeRadTan{.fx = 520.3, .fy = 498.7, .cx = 331.2, .cy = 228.9}), {-2.2, -0.9, -0.5}, -0.3},
+       Camera(640, 480, PinholeRadTan{.fx = 520.3, .fy = 498.7, .cx = 331.2, .cy = 228.9}),
+       {-2.2, -0.9, -0.5},
+       -0.3},
       {"radial_tangential",
-       Camera(640, 480, PinholeRadTan{.fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.28, .k2 = 0.09,
-                                      .p1 = 0.001, .p2 = -0.0008}),
-       {-1.8, 0.4, 0.3}, 0.1},
-      {"atan_fov", Camera(640, 480, AtanCamera{.fx = 420, .fy = 421, .cx = 318.9, .cy = 241.3, .w = 0.92}),
-       {-1.5, -0.3, 0.2}, -0.15},
+       Camera(640, 480,
+              PinholeRadTan{
+                  .fx = 480, .fy = 482, .cx = 322.4, .cy = 236.8, .k1 = -0.28, .k2 = 0.09, .p1 = 0.001, .p2 = -0.0008}),
+       {-1.8, 0.4, 0.3},
+       0.1},
+      {"atan_fov",
+       Camera(640, 480, AtanCamera{.fx = 420, .fy = 421, .cx = 318.9, .cy = 241.3, .w = 0.92}),
+       {-1.5, -0.3, 0.2},
+       -0.15},
   };
 }
 
@@ -83,8 +89,8 @@ TEST_P(MarkerExactness, RenderedCornersSitWhereTheCameraModelProjectsThem) {
     worst = std::max(worst, error);
     sum += error;
   }
-  std::cout << "[ marker ] " << c.name << ": " << found.size() << " corners, mean error "
-            << sum / found.size() << " px, max " << worst << " px\n";
+  std::cout << "[ marker ] " << c.name << ": " << found.size() << " corners, mean error " << sum / found.size()
+            << " px, max " << worst << " px\n";
   RecordProperty("max_corner_error_px", std::to_string(worst));
   EXPECT_LT(worst, 0.1) << c.name;
 }

@@ -109,8 +109,8 @@ TEST(OsMesaContext, SkyIsLookedUpByDirectionAndIgnoresTranslation) {
   const auto out = renderer.render(scene, test_camera(), level);
   EXPECT_EQ(cv::countNonZero(out.labels != 6), 0);
   EXPECT_EQ(cv::countNonZero(out.depth), 0);
-  EXPECT_NEAR(out.colour.at<cv::Vec3f>(2, 30)[0], 200.f, 1.f);   // looking up
-  EXPECT_NEAR(out.colour.at<cv::Vec3f>(45, 30)[0], 30.f, 1.f);   // looking down
+  EXPECT_NEAR(out.colour.at<cv::Vec3f>(2, 30)[0], 200.f, 1.f);  // looking up
+  EXPECT_NEAR(out.colour.at<cv::Vec3f>(45, 30)[0], 30.f, 1.f);  // looking down
   Eigen::Isometry3d moved = level;
   moved.translation() = Eigen::Vector3d(50, -20, 7);
   const auto elsewhere = renderer.render(scene, test_camera(), moved);

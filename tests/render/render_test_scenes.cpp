@@ -7,8 +7,7 @@ namespace facadeslam::test {
 cv::Mat checkerboard(int columns, int rows, int square) {
   cv::Mat board(rows * square, columns * square, CV_8UC1);
   for (int y = 0; y < board.rows; ++y)
-    for (int x = 0; x < board.cols; ++x)
-      board.at<std::uint8_t>(y, x) = ((x / square + y / square) % 2) ? 230 : 25;
+    for (int x = 0; x < board.cols; ++x) board.at<std::uint8_t>(y, x) = ((x / square + y / square) % 2) ? 230 : 25;
   return board;
 }
 
@@ -47,10 +46,10 @@ ReferenceHit cast_ray(const std::vector<ReferenceQuad>& quads, const Eigen::Isom
     const double b = offset.dot(q.down) / q.down.squaredNorm();
     if (a < 0.0 || a >= 1.0 || b < 0.0 || b >= 1.0) continue;
     if (best.quad >= 0 && t >= best.z) continue;
-    const std::uint8_t label =
-        q.labels.empty() ? q.label
-                         : q.labels.at<std::uint8_t>(static_cast<int>(std::floor(b * q.labels.rows)),
-                                                     static_cast<int>(std::floor(a * q.labels.cols)));
+    const std::uint8_t label = q.labels.empty()
+                                   ? q.label
+                                   : q.labels.at<std::uint8_t>(static_cast<int>(std::floor(b * q.labels.rows)),
+                                                               static_cast<int>(std::floor(a * q.labels.cols)));
     if (label == render::kTransparentLabel) continue;  // a hole in the surface
     best.quad = static_cast<int>(i);
     best.z = t;

@@ -29,8 +29,8 @@ struct ReferenceQuad {
 };
 
 struct ReferenceHit {
-  int quad = -1;       // -1: nothing
-  double z = 0.0;      // z-depth in the camera frame
+  int quad = -1;   // -1: nothing
+  double z = 0.0;  // z-depth in the camera frame
   std::uint8_t label = 0;
   double a = 0.0, b = 0.0;  // position on the quad, in [0, 1)
 };
@@ -40,8 +40,8 @@ struct ReferenceHit {
 // the texel containing (a, b); texels holding render::kTransparentLabel are
 // holes the ray passes through. Independent of OpenGL: the reference the
 // renderer is tested against.
-ReferenceHit cast_ray(const std::vector<ReferenceQuad>& quads, const Camera& camera,
-                      const Eigen::Isometry3d& T_w_c, double x, double y);
+ReferenceHit cast_ray(const std::vector<ReferenceQuad>& quads, const Camera& camera, const Eigen::Isometry3d& T_w_c,
+                      double x, double y);
 // The same for a camera-frame ray with z = 1.
 ReferenceHit cast_ray(const std::vector<ReferenceQuad>& quads, const Eigen::Isometry3d& T_w_c,
                       const Eigen::Vector3d& ray_c);

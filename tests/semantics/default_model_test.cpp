@@ -58,8 +58,9 @@ TEST(DefaultModel, IsTheShippedGenomesModularForestWithinFiveMegabytes) {
 TEST(DefaultModel, TheGreyModelIsTheThesisGenomeTrainedOnGreyPhotos) {
   const auto path = test::source_dir() / "models/grey.fsmodel";
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
-  EXPECT_LE(std::filesystem::file_size(path) + std::filesystem::file_size(test::source_dir() / "models/default.fsmodel"),
-            5u * 1000u * 1000u);
+  EXPECT_LE(
+      std::filesystem::file_size(path) + std::filesystem::file_size(test::source_dir() / "models/default.fsmodel"),
+      5u * 1000u * 1000u);
   const Genome genome = Genome::thesis_best();
   const std::unique_ptr<PointDescriptor> descriptor = make_point_descriptor("modular", genome);
   const ForestModel model =

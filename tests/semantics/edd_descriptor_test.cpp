@@ -85,7 +85,8 @@ std::array<double, EddDescriptor::kWidth> reference_edd(const cv::Mat& bgr, cv::
   out[0] = p.x / static_cast<float>(bgr.cols);
   out[1] = p.y / static_cast<float>(bgr.rows);
   std::size_t column = 2;
-  for (const cv::Mat* plane : {&r, &g, &b, &s, &sin_h, &cos_h}) out[column++] = reference_mean(reference_patch(*plane, x, y));
+  for (const cv::Mat* plane : {&r, &g, &b, &s, &sin_h, &cos_h})
+    out[column++] = reference_mean(reference_patch(*plane, x, y));
   for (const cv::Mat* plane : {&r, &g, &b, &h, &s, &v})
     for (const double mu : reference_moments(reference_patch(*plane, x, y))) out[column++] = mu;
   for (const double d : reference_patch(distance, x, y)) out[column++] = d;
@@ -165,7 +166,7 @@ TEST(EddDescriptor, FlatImageHasMeansPositionAndNoMoments) {
   EXPECT_NEAR(row.at<float>(0, 2), 204.f / 255.f, 1e-5);  // R
   EXPECT_NEAR(row.at<float>(0, 3), 102.f / 255.f, 1e-5);  // G
   EXPECT_NEAR(row.at<float>(0, 4), 51.f / 255.f, 1e-5);   // B
-  EXPECT_NEAR(row.at<float>(0, 5), 0.75f, 0.01);           // S = (204 - 51) / 204
+  EXPECT_NEAR(row.at<float>(0, 5), 0.75f, 0.01);          // S = (204 - 51) / 204
   // Hue of (204, 102, 51) is 20 degrees.
   EXPECT_NEAR(row.at<float>(0, 6), std::sin(20.0 * CV_PI / 180.0), 0.02);
   EXPECT_NEAR(row.at<float>(0, 7), std::cos(20.0 * CV_PI / 180.0), 0.02);

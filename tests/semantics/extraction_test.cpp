@@ -79,7 +79,9 @@ TEST_F(Extraction, InactiveModulesAreNotRun) {
 }
 
 TEST(ExtractionPlan, MomentOrderFollowsTheActiveValues) {
-  const auto plan_for = [](std::initializer_list<const char*> names) { return plan_extraction(thesis_with(names).activation); };
+  const auto plan_for = [](std::initializer_list<const char*> names) {
+    return plan_extraction(thesis_with(names).activation);
+  };
   EXPECT_EQ(plan_for({"eta20_c0"}).moment_order, (std::array<int, 3>{2, -1, -1}));
   EXPECT_EQ(plan_for({"hu1_c2"}).moment_order, (std::array<int, 3>{-1, -1, 3}));
   EXPECT_EQ(plan_for({"ami1_c1"}).moment_order, (std::array<int, 3>{-1, 2, -1}));
@@ -104,7 +106,8 @@ TEST_F(Extraction, SubsetColumnsEqualTheFullDescriptorColumns) {
     // more of them are wanted (singular_values_module.hpp).
     const bool singular = module_of_value(index) == Module::singular_values;
     const double tolerance = singular ? 1e-5 * cv::norm(full.col(index), cv::NORM_INF) : 0.0;
-    EXPECT_LE(cv::norm(part.col(col), full.col(index), cv::NORM_INF), tolerance) << names[static_cast<std::size_t>(col)];
+    EXPECT_LE(cv::norm(part.col(col), full.col(index), cv::NORM_INF), tolerance)
+        << names[static_cast<std::size_t>(col)];
   }
 }
 
@@ -174,9 +177,16 @@ TEST_F(Extraction, EmptyInputs) {
 TEST_F(Extraction, RejectsKeypointsOutsideTheImage) {
   const DescriptorParams p = thesis_with({"mean_c0"});
   const PreparedImage prepared = prepare(image, p);
-  EXPECT_THAT([&] { extract(prepared, {{1, 1}, {96.0f, 10.0f}}, p); },
-              ::testing::ThrowsMessage<Error>(::testing::AllOf(HasSubstr("keypoint 1"), HasSubstr("outside the 96x72"))));
-  EXPECT_THAT([&] { extract(prepared, {{-0.6f, 10.0f}}, p); }, ::testing::ThrowsMessage<Error>(HasSubstr("keypoint 0")));
+  EXPECT_THAT(
+      [&] {
+        extract(prepared, {{1, 1}, {96.0f, 10.0f}}, p);
+      },
+      ::testing::ThrowsMessage<Error>(::testing::AllOf(HasSubstr("keypoint 1"), HasSubstr("outside the 96x72"))));
+  EXPECT_THAT(
+      [&] {
+        extract(prepared, {{-0.6f, 10.0f}}, p);
+      },
+      ::testing::ThrowsMessage<Error>(HasSubstr("keypoint 0")));
   EXPECT_THAT([&] { extract(prepared, {{5.0f, NAN}}, p); }, ::testing::ThrowsMessage<Error>(HasSubstr("not finite")));
   EXPECT_NO_THROW(extract(prepared, {{-0.4f, 71.4f}}, p)) << "rounds to pixel (0, 71)";
 }
@@ -194,7 +204,8 @@ TEST_F(Extraction, RejectsAMismatchedPreparedImage) {
   DescriptorParams small = p;
   small.patch_radius = 3;
   const PreparedImage small_border = prepare(image, small);
-  EXPECT_THAT([&] { extract(small_border, keypoints, p); }, ::testing::ThrowsMessage<Error>(HasSubstr("exceeds the prepared border")));
+  EXPECT_THAT([&] { extract(small_border, keypoints, p); },
+              ::testing::ThrowsMessage<Error>(HasSubstr("exceeds the prepared border")));
   EXPECT_NO_THROW(extract(prepared, keypoints, small)) << "a smaller patch fits the wider border";
 }
 

@@ -150,7 +150,8 @@ TEST(LabelledImageViews, ScaleAndGreyEachPhotoAsAskedAndTheCacheAgrees) {
     // Every label colour of the view is one of the stored label image's.
     const cv::Mat stored = load_labelled_image(images[view.name == images[0].name ? 0 : 1]).label;
     std::set<std::tuple<int, int, int>> colours;
-    for (auto it = stored.begin<cv::Vec3b>(); it != stored.end<cv::Vec3b>(); ++it) colours.insert({(*it)[0], (*it)[1], (*it)[2]});
+    for (auto it = stored.begin<cv::Vec3b>(); it != stored.end<cv::Vec3b>(); ++it)
+      colours.insert({(*it)[0], (*it)[1], (*it)[2]});
     for (auto it = seen.label.begin<cv::Vec3b>(); it != seen.label.end<cv::Vec3b>(); ++it)
       EXPECT_TRUE(colours.count({(*it)[0], (*it)[1], (*it)[2]})) << view.name << " at scale " << view.scale;
     const LoadedLabelledImage cached = cache(view);

@@ -19,12 +19,12 @@
 namespace facadeslam::semantics {
 namespace {
 
+using test_util::blobs;
+using test_util::read_bytes;
+using test_util::small_forest;
+using test_util::write_bytes;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-using test_util::read_bytes;
-using test_util::write_bytes;
-using test_util::blobs;
-using test_util::small_forest;
 
 class Forest : public ::testing::Test {
  protected:
@@ -202,8 +202,7 @@ TEST_F(ForestModelFile, TruncatedFileFailsClearly) {
   const std::string bytes = read_bytes(path);
   for (const std::size_t keep : {bytes.size() / 2, bytes.size() - 20, std::size_t{10}}) {
     write_bytes(path, bytes.substr(0, keep));
-    EXPECT_THAT([&] { load_forest_model(path); },
-                ::testing::ThrowsMessage<Error>(HasSubstr(path.string())))
+    EXPECT_THAT([&] { load_forest_model(path); }, ::testing::ThrowsMessage<Error>(HasSubstr(path.string())))
         << "kept " << keep << " of " << bytes.size() << " bytes";
   }
 }
@@ -239,8 +238,8 @@ TEST_F(ForestModelFile, MismatchedModelFailsClearly) {
   ForestExpectation wrong_width = expected;
   wrong_width.descriptor_width = 93;
   EXPECT_THAT([&] { load_forest_model(path, wrong_width); },
-              ::testing::ThrowsMessage<Error>(AllOf(HasSubstr(path.string()), HasSubstr("with 3 values"),
-                                                    HasSubstr("expected 'edd' with 93"))));
+              ::testing::ThrowsMessage<Error>(
+                  AllOf(HasSubstr(path.string()), HasSubstr("with 3 values"), HasSubstr("expected 'edd' with 93"))));
   ForestExpectation wrong_descriptor = expected;
   wrong_descriptor.descriptor = "sift";
   EXPECT_THAT([&] { load_forest_model(path, wrong_descriptor); },

@@ -22,10 +22,10 @@
 namespace facadeslam::semantics {
 namespace {
 
-using ::testing::AllOf;
-using ::testing::HasSubstr;
 using test_util::read_bytes;
 using test_util::write_bytes;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 class FsmodelFile : public ::testing::Test {
@@ -91,8 +91,8 @@ TEST_F(FsmodelFile, SmallerThanOpenCvsOwnFormat) {
 }
 
 TEST_F(FsmodelFile, TruncatedFilesAreRejected) {
-  for (const std::size_t keep : {std::size_t{0}, std::size_t{10}, std::size_t{31}, std::size_t{32}, bytes.size() / 2,
-                                 bytes.size() - 1}) {
+  for (const std::size_t keep :
+       {std::size_t{0}, std::size_t{10}, std::size_t{31}, std::size_t{32}, bytes.size() / 2, bytes.size() - 1}) {
     write_bytes(path, bytes.substr(0, keep));
     SCOPED_TRACE(keep);
     expect_rejected(keep < 32 ? "not a facadeslam model file" : "truncated");

@@ -46,7 +46,8 @@ TEST(GaOperators, InvalidGenomesGetZeroAndEqualObjectivesEqualChances) {
 
 TEST(GaOperators, EverySelectionFavoursTheFitAndNeverPicksAZero) {
   const std::vector<double> fitness{0.0, 1.0, 3.0};
-  for (const Selection s : {Selection::roulette, Selection::rank, Selection::tournament, Selection::stochastic_universal}) {
+  for (const Selection s :
+       {Selection::roulette, Selection::rank, Selection::tournament, Selection::stochastic_universal}) {
     GaOptions o;
     o.selection = s;
     o.tournament_size = 2;
@@ -76,7 +77,8 @@ TEST(GaOperators, CrossoversExchangeSegmentsOrMaskedBits) {
     EXPECT_LT(c.count(), static_cast<std::size_t>(Genome::kBits));
     // One-point: a prefix of a then b's suffix; two-point: one run of b's bits inside.
     std::size_t runs = 0;
-    for (int i = 1; i < Genome::kBits; ++i) runs += c[static_cast<std::size_t>(i)] != c[static_cast<std::size_t>(i - 1)];
+    for (int i = 1; i < Genome::kBits; ++i)
+      runs += c[static_cast<std::size_t>(i)] != c[static_cast<std::size_t>(i - 1)];
     if (kind == Crossover::one_point) {
       EXPECT_EQ(runs, 1u);
       EXPECT_TRUE(c[0]);

@@ -87,23 +87,99 @@ TEST(Genome, ThesisBestDecodesToTables53To55) {
 
 TEST(Genome, ThesisBestActivatesTheValuesOfTable55) {
   const DescriptorParams p = Genome::thesis_best().decode();
-  for (const char* name : {"x_norm", "y_norm", "mean_c0", "mean_c2", "std_c0", "std_c1", "eta11_c0", "eta02_c0",
-                           "eta20_c2", "eta11_c2", "eta30_c0", "eta03_c0", "eta21_c1", "eta21_c2", "eta03_c2",
-                           "eta22_c0", "eta04_c0", "eta04_c1", "eta31_c2", "eta22_c2", "eta13_c2", "eta50_c0",
-                           "eta23_c0", "eta14_c0", "eta05_c0", "eta50_c1", "eta23_c1", "eta05_c1", "eta50_c2",
-                           "eta41_c2", "eta32_c2", "hu2_c0", "hu5_c0", "hu7_c0", "hu1_c1", "hu3_c1", "hu4_c1",
-                           "hu5_c1", "hu7_c1", "hu4_c2", "hu5_c2", "hu6_c2", "hu7_c2", "mean_gevers_l1",
-                           "mean_gevers_l3", "std_gevers_l1", "std_gevers_l3", "mean_gevers_c1", "std_gevers_c1",
-                           "std_gevers_c2", "std_gevers_c3", "mean_geusebroek_h", "std_geusebroek_c", "ami2_c0",
-                           "ami4_c0", "ami8_c0", "ami9_c0", "ami1_c1", "ami3_c1", "ami6_c1", "ami8_c1", "ami1_c2",
-                           "ami8_c2", "ami9_c2", "mean_edge_distance", "std_edge_distance", "sv1_c0", "sv1_c1",
-                           "sv2_c1", "sv1_c2", "angle11_c0", "angle12_c0", "angle21_c0", "angle11_c1",
-                           "angle21_c1", "angle11_c2", "angle12_c2", "angle21_c2", "angle00_minus_21_c0",
-                           "angle11_minus_12_c0", "angle11_minus_21_c0", "angle11_minus_22_c0",
-                           "angle12_minus_21_c0", "angle21_minus_22_c0", "angle00_minus_11_c1",
-                           "angle00_minus_21_c1", "angle11_minus_12_c1", "angle11_minus_21_c1",
-                           "angle12_minus_21_c1", "angle00_minus_22_c2", "angle11_minus_21_c2",
-                           "angle11_minus_22_c2", "angle12_minus_22_c2"})
+  for (const char* name : {"x_norm",
+                           "y_norm",
+                           "mean_c0",
+                           "mean_c2",
+                           "std_c0",
+                           "std_c1",
+                           "eta11_c0",
+                           "eta02_c0",
+                           "eta20_c2",
+                           "eta11_c2",
+                           "eta30_c0",
+                           "eta03_c0",
+                           "eta21_c1",
+                           "eta21_c2",
+                           "eta03_c2",
+                           "eta22_c0",
+                           "eta04_c0",
+                           "eta04_c1",
+                           "eta31_c2",
+                           "eta22_c2",
+                           "eta13_c2",
+                           "eta50_c0",
+                           "eta23_c0",
+                           "eta14_c0",
+                           "eta05_c0",
+                           "eta50_c1",
+                           "eta23_c1",
+                           "eta05_c1",
+                           "eta50_c2",
+                           "eta41_c2",
+                           "eta32_c2",
+                           "hu2_c0",
+                           "hu5_c0",
+                           "hu7_c0",
+                           "hu1_c1",
+                           "hu3_c1",
+                           "hu4_c1",
+                           "hu5_c1",
+                           "hu7_c1",
+                           "hu4_c2",
+                           "hu5_c2",
+                           "hu6_c2",
+                           "hu7_c2",
+                           "mean_gevers_l1",
+                           "mean_gevers_l3",
+                           "std_gevers_l1",
+                           "std_gevers_l3",
+                           "mean_gevers_c1",
+                           "std_gevers_c1",
+                           "std_gevers_c2",
+                           "std_gevers_c3",
+                           "mean_geusebroek_h",
+                           "std_geusebroek_c",
+                           "ami2_c0",
+                           "ami4_c0",
+                           "ami8_c0",
+                           "ami9_c0",
+                           "ami1_c1",
+                           "ami3_c1",
+                           "ami6_c1",
+                           "ami8_c1",
+                           "ami1_c2",
+                           "ami8_c2",
+                           "ami9_c2",
+                           "mean_edge_distance",
+                           "std_edge_distance",
+                           "sv1_c0",
+                           "sv1_c1",
+                           "sv2_c1",
+                           "sv1_c2",
+                           "angle11_c0",
+                           "angle12_c0",
+                           "angle21_c0",
+                           "angle11_c1",
+                           "angle21_c1",
+                           "angle11_c2",
+                           "angle12_c2",
+                           "angle21_c2",
+                           "angle00_minus_21_c0",
+                           "angle11_minus_12_c0",
+                           "angle11_minus_21_c0",
+                           "angle11_minus_22_c0",
+                           "angle12_minus_21_c0",
+                           "angle21_minus_22_c0",
+                           "angle00_minus_11_c1",
+                           "angle00_minus_21_c1",
+                           "angle11_minus_12_c1",
+                           "angle11_minus_21_c1",
+                           "angle12_minus_21_c1",
+                           "angle00_minus_22_c2",
+                           "angle11_minus_21_c2",
+                           "angle11_minus_22_c2",
+                           "angle12_minus_22_c2"})
     EXPECT_TRUE(active(p, name)) << name;
   for (const char* name : {"mean_c1", "std_c2", "eta20_c0", "hu1_c0", "mean_gevers_l2", "ami10_c1", "sv3_c0",
                            "angle00_c0", "angle22_c1", "angle00_minus_11_c0"})
@@ -113,7 +189,17 @@ TEST(Genome, ThesisBestActivatesTheValuesOfTable55) {
 TEST(Genome, ParameterFieldsReadLeastSignificantBitFirst) {
   // Thesis eq. IV.1: x = sum b_i 2^i, b_0 being the field's first bit.
   const std::string text = Genome::thesis_best().to_string();
-  EXPECT_EQ(text.substr(0, 26), "110" "111" "110" "010" "011" "101" "110" "1" "101" "0");
+  EXPECT_EQ(text.substr(0, 26),
+            "110"
+            "111"
+            "110"
+            "010"
+            "011"
+            "101"
+            "110"
+            "1"
+            "101"
+            "0");
   Genome g;
   g.set_bit(0, true);
   EXPECT_EQ(g.decode().colour_space, ColourSpace::lab);
@@ -210,7 +296,8 @@ TEST(Genome, ParseRejectsBadCharacters) {
               ::testing::AllOf(HasSubstr("character 10"), HasSubstr("gaussian_sigma"), HasSubstr("'x'")));
   text = Genome::thesis_best().to_string();
   text[26 + 2] = '2';
-  EXPECT_THAT(error_of([&] { Genome::parse(text); }), ::testing::AllOf(HasSubstr("character 28"), HasSubstr("mean_c0")));
+  EXPECT_THAT(error_of([&] { Genome::parse(text); }),
+              ::testing::AllOf(HasSubstr("character 28"), HasSubstr("mean_c0")));
   text = Genome::thesis_best().to_string();
   text[100] = ' ';  // inner whitespace is not allowed
   EXPECT_THAT(error_of([&] { Genome::parse(text); }), HasSubstr("character 100"));
@@ -253,7 +340,9 @@ class GenomeJsonErrors : public ::testing::Test {
     s.replace(at, from.size(), to);
     return s;
   }
-  std::string error(const std::string& json) { return error_of([&] { genome_from_json(json, "genome.json"); }); }
+  std::string error(const std::string& json) {
+    return error_of([&] { genome_from_json(json, "genome.json"); });
+  }
 };
 
 TEST_F(GenomeJsonErrors, NotJson) { EXPECT_THAT(error("{ not json"), HasSubstr("genome.json: ")); }

@@ -18,7 +18,7 @@ namespace {
 using ::testing::HasSubstr;
 
 TEST(MatchedRows, CounterpartMustBeStrictlyNearest) {
-  const cv::Mat d = (cv::Mat_<float>(4, 4) << 0.1f, 0.5f, 0.9f, 0.3f,   // own nearest: matched
+  const cv::Mat d = (cv::Mat_<float>(4, 4) << 0.1f, 0.5f, 0.9f, 0.3f,  // own nearest: matched
                      0.2f, 0.3f, 0.1f, 0.9f,                           // two others nearer: miss
                      0.4f, 0.7f, 0.4f, 0.5f,                           // tie with another: miss
                      0.6f, 0.8f, 0.7f, 0.0f);                          // own at distance 0: matched
@@ -27,9 +27,9 @@ TEST(MatchedRows, CounterpartMustBeStrictlyNearest) {
 
 TEST(MatchedRows, NonFiniteDistancesAreNeverNearest) {
   const float nan = std::nanf(""), inf = HUGE_VALF;
-  const cv::Mat d = (cv::Mat_<float>(3, 3) << nan, 0.5f, 0.9f,   // own undefined: miss
-                     nan, 0.3f, inf,                             // others undefined or infinite: matched
-                     0.1f, 0.2f, inf);                           // own infinite: miss
+  const cv::Mat d = (cv::Mat_<float>(3, 3) << nan, 0.5f, 0.9f,  // own undefined: miss
+                     nan, 0.3f, inf,                            // others undefined or infinite: matched
+                     0.1f, 0.2f, inf);                          // own infinite: miss
   EXPECT_EQ(matched_rows(d), (std::vector<bool>{false, true, false}));
 }
 

@@ -73,9 +73,9 @@ cv::Mat colour_ramp(cv::Size size) {
       const int blue_noise = rng.uniform(0, 3);  // one draw a statement: in order
       const int green_noise = rng.uniform(0, 3);
       const int red_noise = rng.uniform(0, 3);
-      image.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(170 - x / 2 + blue_noise),
-                                            cv::saturate_cast<uchar>(60 + 1.3 * y + green_noise),
-                                            cv::saturate_cast<uchar>(60 + x + red_noise));
+      image.at<cv::Vec3b>(y, x) =
+          cv::Vec3b(cv::saturate_cast<uchar>(170 - x / 2 + blue_noise),
+                    cv::saturate_cast<uchar>(60 + 1.3 * y + green_noise), cv::saturate_cast<uchar>(60 + x + red_noise));
     }
   return image;
 }
@@ -104,11 +104,14 @@ TEST(InvarianceSuite, IdentityChangesGiveMatchRateOneForEveryDescriptor) {
     owned.push_back(make_point_descriptor(name, Genome::thesis_best()));
     descriptors.push_back(owned.back().get());
   }
-  const InvarianceResult r = run_invariance(
-      {image}, descriptors,
-      only({{InvarianceCase::blur, {1}}, {InvarianceCase::rotation, {0}}, {InvarianceCase::resize, {1}},
-            {InvarianceCase::affine, {0}}, {InvarianceCase::intensity_scale, {1}}, {InvarianceCase::intensity_shift, {0}},
-            {InvarianceCase::temperature, {kReferenceKelvin}}}));
+  const InvarianceResult r = run_invariance({image}, descriptors,
+                                            only({{InvarianceCase::blur, {1}},
+                                                  {InvarianceCase::rotation, {0}},
+                                                  {InvarianceCase::resize, {1}},
+                                                  {InvarianceCase::affine, {0}},
+                                                  {InvarianceCase::intensity_scale, {1}},
+                                                  {InvarianceCase::intensity_shift, {0}},
+                                                  {InvarianceCase::temperature, {kReferenceKelvin}}}));
   // Grid 15 .. 134 x 15 .. 94 in steps of 9.
   EXPECT_EQ(r.reference_keypoints, 14u * 9u);
   ASSERT_EQ(r.descriptors.size(), 5u);
@@ -183,9 +186,12 @@ TEST_F(InvarianceBadInput, BadOptionsNameTheProblem) {
   o.margin = -2;
   EXPECT_THAT(error_with(o), HasSubstr("margin must be >= 0"));
   EXPECT_THAT(error_with(only({})), HasSubstr("no case"));
-  EXPECT_THAT(error_with(only({{InvarianceCase::blur, {1}}, {InvarianceCase::blur, {3}}})), HasSubstr("blur is listed twice"));
+  EXPECT_THAT(error_with(only({{InvarianceCase::blur, {1}}, {InvarianceCase::blur, {3}}})),
+              HasSubstr("blur is listed twice"));
   EXPECT_THAT(error_with(only({{InvarianceCase::jpeg, {150}}})), HasSubstr("jpeg: 150"));
-  EXPECT_THAT(test::error_of([&] { run_invariance({image_}, {}, only({{InvarianceCase::blur, {1}}})); }),
+  EXPECT_THAT(test::error_of([&] {
+                run_invariance({image_}, {}, only({{InvarianceCase::blur, {1}}}));
+              }),
               HasSubstr("no descriptor"));
 }
 
@@ -203,7 +209,8 @@ TEST(ImageList, FoldersFilesAndListsInTheGivenOrder) {
   test::TempDir dir;
   fs::create_directories(dir / "photos");
   fs::create_directories(dir / "set/images");
-  for (const char* name : {"photos/b.png", "photos/a.jpg", "set/images/street_1.jpg", "set/images/street_2.png", "one.png"})
+  for (const char* name :
+       {"photos/b.png", "photos/a.jpg", "set/images/street_1.jpg", "set/images/street_2.png", "one.png"})
     write_image(dir / name, colour_ramp({20, 20}));
   fs::rename(dir / "photos/a.jpg", dir / "photos/a.JPG");  // extensions in any case
   test::write_text(dir / "photos/notes.txt", "not an image");

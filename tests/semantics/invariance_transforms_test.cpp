@@ -117,7 +117,7 @@ TEST(Rotation, CanvasHoldsTheWholeRotatedImage) {
 
 TEST(Resize, ImageAndMapScaleTogether) {
   const TransformedImage half = resize_image(test_util::textured_image({101, 60}, 6), 0.5);
-  EXPECT_EQ(half.bgr.size(), cv::Size(51, 30));  // round(50.5) = 51
+  EXPECT_EQ(half.bgr.size(), cv::Size(51, 30));                         // round(50.5) = 51
   const cv::Point2d corner = map_point(half.point_map, {100.5, 59.5});  // bottom-right edge of the image
   EXPECT_NEAR(corner.x, 50.5, 1e-9);
   EXPECT_NEAR(corner.y, 29.5, 1e-9);
@@ -130,7 +130,7 @@ TEST(AffineCases, AreTiltsOfTheDocumentedViewpointAngles) {
     const cv::Matx22d a = affine_case_matrix(k);
     const double cos_theta = std::cos(viewpoints[(k - 1) % 5] * degree);
     EXPECT_NEAR(cv::determinant(a), cos_theta, 1e-12) << "case " << k;  // area foreshortened by cos theta
-    EXPECT_NEAR(a(0, 1), a(1, 0), 1e-12) << "case " << k;                // a pure tilt, no rotation
+    EXPECT_NEAR(a(0, 1), a(1, 0), 1e-12) << "case " << k;               // a pure tilt, no rotation
     // The direction phi is kept, the one across it shrinks by cos theta.
     const cv::Vec2d along = k <= 5 ? cv::Vec2d(1, 0) : cv::Vec2d(1, 1) / std::sqrt(2.0);
     const cv::Vec2d across(-along[1], along[0]);
@@ -192,7 +192,7 @@ TEST(Illuminant, GainsAreOneAtTheReferenceTemperature) {
 
 TEST(Illuminant, WarmLightIsRedderAndColdLightBluer) {
   const cv::Vec3d warm = illuminant_gains_bgr(3000), cold = illuminant_gains_bgr(10000);
-  EXPECT_DOUBLE_EQ(warm[1], 1.0);  // green keeps the brightness
+  EXPECT_DOUBLE_EQ(warm[1], 1.0);    // green keeps the brightness
   EXPECT_NEAR(warm[2], 1.24, 0.01);  // the header's documented values
   EXPECT_NEAR(warm[0], 0.68, 0.01);
   EXPECT_NEAR(cold[2], 0.94, 0.01);
@@ -241,7 +241,8 @@ TEST(CaseValues, BadValuesAreRejectedNamingTheCaseAndTheExpectation) {
       {InvarianceCase::jpeg, {101}, "jpeg: 101 is not a valid quality (expected an integer from 0 to 100)"},
       {InvarianceCase::jpeg, {}, "jpeg: expected at least one value"},
   };
-  for (const Bad& b : bad) EXPECT_THAT(test::error_of([&] { check_case_values(b.id, b.values); }), HasSubstr(b.mention));
+  for (const Bad& b : bad)
+    EXPECT_THAT(test::error_of([&] { check_case_values(b.id, b.values); }), HasSubstr(b.mention));
 }
 
 TEST(CaseValues, UnknownCaseNameListsTheKnownOnes) {

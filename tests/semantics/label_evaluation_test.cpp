@@ -55,8 +55,8 @@ TEST(CornerKeypoints, FindTheCornersOfASquareInsideTheBorder) {
   const std::vector<cv::Point2f> points = corner_keypoints(image, 10);
   ASSERT_FALSE(points.empty());
   for (const cv::Point2f& p : points) {
-    const bool near_a_corner = (std::abs(p.x - 40) <= 3 || std::abs(p.x - 99) <= 3) &&
-                               (std::abs(p.y - 30) <= 3 || std::abs(p.y - 79) <= 3);
+    const bool near_a_corner =
+        (std::abs(p.x - 40) <= 3 || std::abs(p.x - 99) <= 3) && (std::abs(p.y - 30) <= 3 || std::abs(p.y - 79) <= 3);
     EXPECT_TRUE(near_a_corner) << p;
   }
   for (std::size_t i = 1; i < points.size(); ++i)
@@ -84,14 +84,13 @@ TEST(LabelImage, ColoursMapToTheNineClasses) {
 TEST(LabelImage, SixteenBitRgbaPngReadsAsClassColours) {
   test::TempDir dir;
   // LabelMeFacade's labels are 16-bit RGBA: 128 is stored as 128 * 257.
-  cv::Mat label(4, 6, CV_16UC4, cv::Scalar(0, 0, 128 * 257, 65535));  // BGRA: building
+  cv::Mat label(4, 6, CV_16UC4, cv::Scalar(0, 0, 128 * 257, 65535));              // BGRA: building
   label(cv::Rect(3, 0, 3, 4)).setTo(cv::Scalar(128 * 257, 128 * 257, 0, 65535));  // sky
   cv::imwrite((dir / "label.png").string(), label);
   const cv::Mat read = read_label_image(dir / "label.png");
   const auto classes = classes_at(read, {cv::Point2f(1, 1), cv::Point2f(4, 2)});
   EXPECT_EQ(classes, (std::vector<std::uint8_t>{1, 6}));
-  EXPECT_THAT([&] { read_label_image(dir / "none.png"); },
-              ::testing::ThrowsMessage<Error>(HasSubstr("none.png")));
+  EXPECT_THAT([&] { read_label_image(dir / "none.png"); }, ::testing::ThrowsMessage<Error>(HasSubstr("none.png")));
 }
 
 TEST(ConfusionMatrixMetrics, HandComputedExample) {
@@ -153,7 +152,8 @@ std::vector<SampleCandidate> candidates_with_counts(const std::vector<int>& coun
   std::vector<SampleCandidate> out;
   std::uint32_t keypoint = 0;
   for (std::size_t c = 0; c < counts.size(); ++c)
-    for (int i = 0; i < counts[c]; ++i) out.push_back({static_cast<std::uint32_t>(i % 3), keypoint++, static_cast<std::uint8_t>(c)});
+    for (int i = 0; i < counts[c]; ++i)
+      out.push_back({static_cast<std::uint32_t>(i % 3), keypoint++, static_cast<std::uint8_t>(c)});
   return out;
 }
 
@@ -253,8 +253,9 @@ TEST_F(SyntheticDataset, ClearErrorsForBrokenLayouts) {
 TEST_F(SyntheticDataset, LabelOfAnotherSizeFails) {
   cv::imwrite((dir / "labels/facade_1.png").string(), cv::Mat(10, 10, CV_8UC3, cv::Scalar::all(0)));
   const auto train = read_facade_split(dir.path(), "train.txt");
-  EXPECT_THAT([&] { load_labelled_image(train[1]); },
-              ::testing::ThrowsMessage<Error>(AllOf(HasSubstr("facade_1.png"), HasSubstr("10x10"), HasSubstr("120x90"))));
+  EXPECT_THAT(
+      [&] { load_labelled_image(train[1]); },
+      ::testing::ThrowsMessage<Error>(AllOf(HasSubstr("facade_1.png"), HasSubstr("10x10"), HasSubstr("120x90"))));
 }
 
 TEST_F(SyntheticDataset, WholeRunLabelsTheSyntheticFacades) {

@@ -116,7 +116,8 @@ TEST(SingularValues, StructuredPatches) {
   EXPECT_NEAR(sigma[1], 1.0, 1e-5);
   EXPECT_NEAR(sigma[2], 1.0, 1e-5);
   // Rank one: u v^T with |u| = 3, |v| = 2.
-  const cv::Mat rank_one = patch_from(4, [](double x, double y) { return (y == 0 ? 3.0 : 0.0) * (x == 1 || x == -1 ? std::sqrt(2.0) : 0.0); });
+  const cv::Mat rank_one = patch_from(
+      4, [](double x, double y) { return (y == 0 ? 3.0 : 0.0) * (x == 1 || x == -1 ? std::sqrt(2.0) : 0.0); });
   top_singular_values(view_of(rank_one), 3, sigma);
   EXPECT_NEAR(sigma[0], 6.0, 1e-5);
   EXPECT_NEAR(sigma[1], 0.0, 1e-5);
@@ -135,7 +136,8 @@ TEST(SingularValues, StructuredPatches) {
 }
 
 TEST(SingularValues, ThreeStepsPerWantedValue) {
-  const cv::Mat patch = test_util::supersampled_patch(10, [](double x, double y) { return 0.5 + 0.3 * std::sin(x * 0.7) * std::cos(y * 0.4) + 0.01 * x * y; });
+  const cv::Mat patch = test_util::supersampled_patch(
+      10, [](double x, double y) { return 0.5 + 0.3 * std::sin(x * 0.7) * std::cos(y * 0.4) + 0.01 * x * y; });
   double one[3], three[3];
   EXPECT_EQ(top_singular_values(view_of(patch), 1, one), 3);
   EXPECT_EQ(top_singular_values(view_of(patch), 3, three), 9);
@@ -198,7 +200,8 @@ TEST(SingularValues, ModuleAloneEqualsTheExtractorsBatches) {
       const auto column = std::find(std::begin(active), std::end(active), i) - std::begin(active);
       const float got = values[static_cast<std::size_t>(i)];
       if (column < 4)
-        EXPECT_EQ(got, batch.at<float>(static_cast<int>(k), static_cast<int>(column))) << "keypoint " << k << " value " << i;
+        EXPECT_EQ(got, batch.at<float>(static_cast<int>(k), static_cast<int>(column)))
+            << "keypoint " << k << " value " << i;
       else
         EXPECT_EQ(got, -99.0f) << "inactive value " << i << " written";
     }
@@ -257,7 +260,7 @@ TEST(EdgeDistance, ModuleMeanAndSigmaNextToAnEdge) {
   const ModuleContext context{image, {23, 15}, 23, 15, 3, moments};
   float values[2] = {-1, -1};
   edge_distance_module(context, 0b11, values);
-  EXPECT_NEAR(values[0], 3.0, 1e-5);           // mean of 0..6
+  EXPECT_NEAR(values[0], 3.0, 1e-5);             // mean of 0..6
   EXPECT_NEAR(values[1], std::sqrt(4.0), 1e-5);  // population sigma of 0..6
 }
 

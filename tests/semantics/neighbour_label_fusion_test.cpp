@@ -112,7 +112,7 @@ TEST_F(NeighbourFusionTest, TheGridFindsTheExactNearestNeighbours) {
     const double x = 20.0 * unit(random);
     const double a = unit(random);
     const double b = unit(random);
-    Eigen::Vector3d p = kind < 0.35 ? Eigen::Vector3d(x, 4.0, 6.0 * a)
+    Eigen::Vector3d p = kind < 0.35  ? Eigen::Vector3d(x, 4.0, 6.0 * a)
                         : kind < 0.7 ? Eigen::Vector3d(x, -4.0, 6.0 * a)
                         : kind < 0.9 ? Eigen::Vector3d(x, 8.0 * a - 4.0, 0.0)
                                      : Eigen::Vector3d(x, 6.0 * a - 3.0, 5.0 * b);
@@ -138,8 +138,8 @@ class SkyCueTest : public ::testing::Test {
     const auto pyramid = std::make_shared<const ImagePyramid>(colour);
     for (int k = 0; k < 2; ++k) {
       const SE3d T_c_w(SO3d(), Eigen::Vector3d(-1.0 * k, 0.0, 0.0));
-      keyframes.push_back(std::make_shared<KeyFrame>(map.new_keyframe_id(),
-                                                     Frame{static_cast<std::size_t>(k), 0.1 * k, colour, {}, pyramid}, T_c_w));
+      keyframes.push_back(std::make_shared<KeyFrame>(
+          map.new_keyframe_id(), Frame{static_cast<std::size_t>(k), 0.1 * k, colour, {}, pyramid}, T_c_w));
     }
   }
   // A point at `depth` along the first keyframe's axis, mostly sky by its
@@ -147,8 +147,8 @@ class SkyCueTest : public ::testing::Test {
   std::shared_ptr<MapPoint> add(double depth, bool both, const ClassVotes& votes = votes_of(kSky, 0.6f, kBuilding)) {
     PointGeometry geometry;
     geometry.p_w = Eigen::Vector3d(0.0, 0.0, depth);
-    auto point = std::make_shared<MapPoint>(map.new_point_id(), PatchSource{keyframes[0]->id(), nullptr, 0, {80, 60}},
-                                            geometry);
+    auto point =
+        std::make_shared<MapPoint>(map.new_point_id(), PatchSource{keyframes[0]->id(), nullptr, 0, {80, 60}}, geometry);
     point->set_votes(votes);
     points.push_back(point);
     observations.push_back({keyframes[0], point->id(), {0, {80.0, 60.0}, true}});

@@ -37,7 +37,8 @@ TEST(PatchMoments, RectangleMatchesClosedForm) {
   // A 7 x 4 rectangle of intensity 0.8, off the patch centre.
   const int w = 7, h = 4;
   const double v = 0.8;
-  const cv::Mat patch = patch_from(10, [&](double x, double y) { return x >= -5 && x < -5 + w && y >= 1 && y < 1 + h ? v : 0.0; });
+  const cv::Mat patch =
+      patch_from(10, [&](double x, double y) { return x >= -5 && x < -5 + w && y >= 1 && y < 1 + h ? v : 0.0; });
   const PatchMoments m = moments_of(patch);
   // Discrete sums over a run of n pixels about its middle:
   // sum d^2 = n(n^2-1)/12, sum d^4 = n(n^2-1)(3n^2-7)/240, odd sums = 0.
@@ -116,7 +117,8 @@ TEST(HuMoments, MatchOpenCv) {
   double reference[7];
   cv::HuMoments(cv::moments(patch, false), reference);
   for (int i = 0; i < 7; ++i)
-    EXPECT_NEAR(phi[static_cast<std::size_t>(i)], reference[i], 1e-4 * std::abs(reference[i]) + 1e-12) << "phi" << i + 1;
+    EXPECT_NEAR(phi[static_cast<std::size_t>(i)], reference[i], 1e-4 * std::abs(reference[i]) + 1e-12)
+        << "phi" << i + 1;
 }
 
 TEST(HuMoments, UnchangedByQuarterTurnsOfThePatch) {
@@ -144,9 +146,8 @@ TEST(AffineInvariants, UnchangedByAnAffineMapOfABlob) {
   const PatchMoments m = moments_of(original);
   for (const cv::Matx22d a : {cv::Matx22d(1.2, 0.4, -0.1, 0.9), cv::Matx22d(0.8, -0.5, 0.3, 1.1)}) {
     const cv::Matx22d inv = a.inv();
-    const cv::Mat mapped = supersampled_patch(10, [&](double x, double y) {
-      return blob(inv(0, 0) * x + inv(0, 1) * y, inv(1, 0) * x + inv(1, 1) * y);
-    });
+    const cv::Mat mapped = supersampled_patch(
+        10, [&](double x, double y) { return blob(inv(0, 0) * x + inv(0, 1) * y, inv(1, 0) * x + inv(1, 1) * y); });
     const PatchMoments mm = moments_of(mapped);
     for (int k = 1; k <= 10; ++k) {
       const double expected = affine_invariant(m, k);
@@ -161,7 +162,8 @@ TEST(AffineInvariants, UnchangedByAnAffineMapOfABlob) {
 
 TEST(AffineInvariants, TellDifferentShapesApart) {
   const PatchMoments a = moments_of(supersampled_patch(10, blob));
-  const PatchMoments b = moments_of(supersampled_patch(10, [](double x, double y) { return blob(-x, 0.6 * y) + blob(y, x); }));
+  const PatchMoments b =
+      moments_of(supersampled_patch(10, [](double x, double y) { return blob(-x, 0.6 * y) + blob(y, x); }));
   int differing = 0;
   for (int k = 1; k <= 10; ++k)
     differing += std::abs(affine_invariant(a, k) - affine_invariant(b, k)) > 0.1 * std::abs(affine_invariant(a, k));

@@ -91,8 +91,7 @@ TEST_P(EveryDescriptor, RejectsBadInput) {
 
 INSTANTIATE_TEST_SUITE_P(PointDescriptors, EveryDescriptor,
                          ::testing::Values(Expected{"modular", 93}, Expected{"sift", 128},
-                                           Expected{"opponent-sift", 384}, Expected{"orb", 256},
-                                           Expected{"edd", 113}),
+                                           Expected{"opponent-sift", 384}, Expected{"orb", 256}, Expected{"edd", 113}),
                          [](const auto& info) {
                            std::string name = info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');
@@ -124,8 +123,8 @@ TEST(SiftBaseline, MatchesOpenCvOnTheSameKeypoints) {
 
 TEST(OpponentSift, ChannelsFollowTheFormulas) {
   cv::Mat image(1, 3, CV_8UC3);
-  image.at<cv::Vec3b>(0, 0) = cv::Vec3b(0, 0, 255);    // pure red (BGR)
-  image.at<cv::Vec3b>(0, 1) = cv::Vec3b(255, 0, 0);    // pure blue
+  image.at<cv::Vec3b>(0, 0) = cv::Vec3b(0, 0, 255);  // pure red (BGR)
+  image.at<cv::Vec3b>(0, 1) = cv::Vec3b(255, 0, 0);  // pure blue
   image.at<cv::Vec3b>(0, 2) = cv::Vec3b(30, 60, 90);
   const auto o = opponent_channels(image);
   ASSERT_EQ(o.size(), 3u);

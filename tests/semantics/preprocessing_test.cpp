@@ -87,8 +87,10 @@ TEST(ColourConversion, MatchesTheDocumentedFormulas) {
   auto ours = converted(bgr, ColourSpace::xyz);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(at(ours, c), xyz.at<cv::Vec3f>(0)[c], 1e-5) << c;
   // The 8-bit spaces are OpenCV's 8-bit conversions / 255.
-  for (const auto& [space, code] : {std::pair{ColourSpace::lab, cv::COLOR_BGR2Lab}, {ColourSpace::hsv, cv::COLOR_BGR2HSV_FULL},
-                                   {ColourSpace::luv, cv::COLOR_BGR2Luv}, {ColourSpace::hls, cv::COLOR_BGR2HLS_FULL}}) {
+  for (const auto& [space, code] : {std::pair{ColourSpace::lab, cv::COLOR_BGR2Lab},
+                                    {ColourSpace::hsv, cv::COLOR_BGR2HSV_FULL},
+                                    {ColourSpace::luv, cv::COLOR_BGR2Luv},
+                                    {ColourSpace::hls, cv::COLOR_BGR2HLS_FULL}}) {
     cv::Mat reference;
     cv::cvtColor(bgr, reference, code);
     auto planes = converted(bgr, space);
@@ -332,7 +334,9 @@ TEST(Prepare, ReusingAPreparedImageGivesTheSameResultInTheSameMemory) {
   EXPECT_EQ(reused.computed, fresh.computed);
   for (int p = 0; p < kPlaneCount; ++p) {
     if (!fresh.computed.test(static_cast<std::size_t>(p))) continue;
-    EXPECT_EQ(cv::norm(reused.planes[static_cast<std::size_t>(p)], fresh.planes[static_cast<std::size_t>(p)], cv::NORM_INF), 0.0)
+    EXPECT_EQ(
+        cv::norm(reused.planes[static_cast<std::size_t>(p)], fresh.planes[static_cast<std::size_t>(p)], cv::NORM_INF),
+        0.0)
         << plane_name(static_cast<PlaneId>(p));
   }
   // Fewer planes next time: the others are released, not left stale.

@@ -31,14 +31,14 @@ class SemanticWorkerTest : public ::testing::Test {
   // strongest level-0 corners.
   KeyFramePoints job(bool with_colour, std::size_t count = 40) const {
     auto pyramid = std::make_shared<const ImagePyramid>(colour_);
-    auto keyframe = std::make_shared<const KeyFrame>(0, Frame{0, 0.0, with_colour ? colour_ : cv::Mat(), {}, pyramid},
-                                                     SE3d());
+    auto keyframe =
+        std::make_shared<const KeyFrame>(0, Frame{0, 0.0, with_colour ? colour_ : cv::Mat(), {}, pyramid}, SE3d());
     KeyFramePoints out{keyframe, {}};
     for (const Corner& c : pyramid->level(0).corners) {
       if (out.points.size() == count) break;
-      out.points.push_back({std::make_shared<MapPoint>(out.points.size(), PatchSource{0, pyramid, 0, {c.x, c.y}},
-                                                       PointGeometry{}),
-                            {c.x, c.y}});
+      out.points.push_back(
+          {std::make_shared<MapPoint>(out.points.size(), PatchSource{0, pyramid, 0, {c.x, c.y}}, PointGeometry{}),
+           {c.x, c.y}});
     }
     return out;
   }
@@ -73,7 +73,8 @@ TEST_F(SemanticWorkerTest, LabelsEveryPointWithTheForestsVoteAtItsPatch) {
   // The same descriptor and forest, by hand.
   auto descriptor = make_point_descriptor(model_.descriptor, model_.genome);
   std::vector<cv::Point2f> keypoints;
-  for (const auto& [p, px] : points.points) keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
+  for (const auto& [p, px] : points.points)
+    keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
   cv::Mat shares;
   const std::vector<int> expected = model_.forest.predict(descriptor->compute(colour_, keypoints), shares);
   for (std::size_t i = 0; i < points.points.size(); ++i) {

@@ -47,8 +47,9 @@ inline cv::Mat textured_image(cv::Size size, unsigned seed = 1) {
   cv::RNG rng(seed);
   for (int y = 0; y < size.height; ++y)
     for (int x = 0; x < size.width; ++x)
-      image.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<uchar>(40 + (x * 3) % 160), static_cast<uchar>(60 + (y * 2) % 150),
-                                            static_cast<uchar>(90 + ((x + y) % 120)));
+      image.at<cv::Vec3b>(y, x) =
+          cv::Vec3b(static_cast<uchar>(40 + (x * 3) % 160), static_cast<uchar>(60 + (y * 2) % 150),
+                    static_cast<uchar>(90 + ((x + y) % 120)));
   test::paint_random_rectangles(image, rng, 60, 0, 3, 30);
   cv::Mat noise(size, CV_8UC3);
   rng.fill(noise, cv::RNG::UNIFORM, cv::Scalar::all(0), cv::Scalar::all(12));

@@ -19,7 +19,8 @@ cv::Mat test_plane() {
   cv::Mat plane(40, 57, CV_32F);
   for (int y = 0; y < plane.rows; ++y)
     for (int x = 0; x < plane.cols; ++x)
-      plane.at<float>(y, x) = 300.0f + 20.0f * std::sin(0.37f * x) * std::cos(0.23f * y) + 0.01f * static_cast<float>(x * y);
+      plane.at<float>(y, x) =
+          300.0f + 20.0f * std::sin(0.37f * x) * std::cos(0.23f * y) + 0.01f * static_cast<float>(x * y);
   return plane;
 }
 

@@ -30,17 +30,20 @@ inline void synthetic_facade(int index, cv::Size size, cv::Mat& photo, cv::Mat& 
   for (int y = 0; y < size.height; ++y)
     for (int x = 0; x < size.width; ++x) {
       cv::Vec3b colour;
-      if (y < sky_end) colour = cv::Vec3b(static_cast<uchar>(220 - y), static_cast<uchar>(170 - y / 2), 110);
+      if (y < sky_end)
+        colour = cv::Vec3b(static_cast<uchar>(220 - y), static_cast<uchar>(170 - y / 2), 110);
       else if (y < road_start)
         colour = ((y / 4 + (x / 8) % 2) % 2) ? cv::Vec3b(60, 80, 170) : cv::Vec3b(90, 110, 190);  // bricks
-      else colour = cv::Vec3b::all(static_cast<uchar>(95 + rng.uniform(-25, 26)));
+      else
+        colour = cv::Vec3b::all(static_cast<uchar>(95 + rng.uniform(-25, 26)));
       photo.at<cv::Vec3b>(y, x) = colour;
     }
   label.setTo(label_colour("sky"));
   label.rowRange(sky_end, road_start).setTo(label_colour("building"));
   label.rowRange(road_start, size.height).setTo(label_colour("road"));
   for (int w = 0; w < 3; ++w) {
-    const cv::Rect window(8 + w * size.width / 3 + rng.uniform(0, 4), sky_end + 6, size.width / 8, (road_start - sky_end) / 2);
+    const cv::Rect window(8 + w * size.width / 3 + rng.uniform(0, 4), sky_end + 6, size.width / 8,
+                          (road_start - sky_end) / 2);
     cv::rectangle(photo, window, cv::Scalar(40, 30, 25), cv::FILLED);
     cv::rectangle(label, window, label_colour("window"), cv::FILLED);
   }

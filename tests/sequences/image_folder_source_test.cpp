@@ -15,15 +15,14 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::AllOf;
-using ::testing::HasSubstr;
 using test::error_of;
 using test::read_all;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 
 // Ten images image0.png .. image9.png, each marked with 10 * its number.
 void write_ten(const test::TempDir& dir) {
-  for (int i = 0; i < 10; ++i)
-    test::write_marked_image(dir / test::numbered("image", i, ".png"), 10 * i);
+  for (int i = 0; i < 10; ++i) test::write_marked_image(dir / test::numbered("image", i, ".png"), 10 * i);
 }
 
 TEST(ImageFolderSource, ReadsImagesInNaturalOrderWithTimestampsFromFps) {
@@ -31,9 +30,9 @@ TEST(ImageFolderSource, ReadsImagesInNaturalOrderWithTimestampsFromFps) {
   test::write_marked_image(dir / "frame10.png", 100);
   test::write_marked_image(dir / "frame2.png", 20);
   test::write_marked_image(dir / "frame1.png", 10);
-  test::write_marked_image(dir / "frame3.PNG", 30);  // extension case does not matter
+  test::write_marked_image(dir / "frame3.PNG", 30);    // extension case does not matter
   test::write_text(dir / "notes.md", "not an image");  // ignored
-  test::write_garbage(dir / ".frame0.png");             // hidden: ignored
+  test::write_garbage(dir / ".frame0.png");            // hidden: ignored
 
   SequenceOptions options;
   options.fps = 10.0;
@@ -60,11 +59,9 @@ TEST(ImageFolderSource, ReadsImagesInNaturalOrderWithTimestampsFromFps) {
 
 TEST(ImageFolderSource, AcceptsEveryListedExtension) {
   test::TempDir dir;
-  const std::vector<std::string> extensions = {"png", "jpg", "jpeg", "bmp",
-                                               "tif", "tiff", "pgm", "ppm"};
+  const std::vector<std::string> extensions = {"png", "jpg", "jpeg", "bmp", "tif", "tiff", "pgm", "ppm"};
   for (std::size_t i = 0; i < extensions.size(); ++i) {
-    const fs::path path =
-        dir / test::numbered("f", static_cast<long long>(i), std::string(".") + extensions[i]);
+    const fs::path path = dir / test::numbered("f", static_cast<long long>(i), std::string(".") + extensions[i]);
     if (extensions[i] == "pgm")
       test::write_image(path, cv::Mat(24, 32, CV_8UC1, cv::Scalar(50)));
     else
@@ -116,8 +113,8 @@ TEST(ImageFolderSource, TimestampCountMismatchNamesTheFileAndCounts) {
   for (int i = 0; i < 3; ++i) test::write_marked_image(dir / test::numbered("im", i, ".png"), i);
   test::write_text(dir / "times.txt", "0\n1\n");
   const auto message = error_of([&] { ImageFolderSource source(dir.path(), {}); });
-  EXPECT_THAT(message, AllOf(HasSubstr((dir / "times.txt").string()), HasSubstr("2 timestamps"),
-                             HasSubstr("3 images")));
+  EXPECT_THAT(message,
+              AllOf(HasSubstr((dir / "times.txt").string()), HasSubstr("2 timestamps"), HasSubstr("3 images")));
 }
 
 TEST(ImageFolderSource, NonMonotonicTimestampNamesFileAndLine) {
@@ -213,8 +210,7 @@ TEST(ImageFolderSource, FolderWithoutImagesNamesItAndTheExpectedFiles) {
   test::TempDir dir;
   test::write_text(dir / "readme.txt", "nothing here");
   EXPECT_THAT(error_of([&] { ImageFolderSource source(dir.path(), {}); }),
-              AllOf(HasSubstr(dir.path().string()), HasSubstr("no images found"),
-                    HasSubstr("png, jpg")));
+              AllOf(HasSubstr(dir.path().string()), HasSubstr("no images found"), HasSubstr("png, jpg")));
 }
 
 TEST(ImageFolderSource, CorruptImageStopsWithItsPath) {
@@ -258,9 +254,8 @@ TEST(ImageFolderSource, ImageOfAnotherSizeNamesItAndBothSizes) {
   test::write_marked_image(dir / "f2.png", 2, 40, 30);
   ImageFolderSource source(dir.path(), {});
   ASSERT_TRUE(source.next().has_value());
-  EXPECT_THAT(error_of([&] { source.next(); }),
-              AllOf(HasSubstr((dir / "f2.png").string()), HasSubstr("40x30"), HasSubstr("32x24"),
-                    HasSubstr((dir / "f1.png").string())));
+  EXPECT_THAT(error_of([&] { source.next(); }), AllOf(HasSubstr((dir / "f2.png").string()), HasSubstr("40x30"),
+                                                      HasSubstr("32x24"), HasSubstr((dir / "f1.png").string())));
 }
 
 TEST(ImageFolderSource, GreyImagesBecomeBgr) {

@@ -15,10 +15,10 @@
 namespace facadeslam {
 namespace {
 
-using ::testing::ElementsAre;
-using ::testing::HasSubstr;
 using test::error_of;
 using test::read_all;
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
 
 // Frames 0-3 at 10.0, 10.5, 11.0, 11.5 s.
 void write_sequence(const test::TempDir& dir) {

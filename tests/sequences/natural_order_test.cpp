@@ -16,12 +16,9 @@ TEST(NaturalOrder, DigitRunsCompareAsNumbers) {
 }
 
 TEST(NaturalOrder, SortsAMixedListAsPeopleExpect) {
-  std::vector<std::string> names = {"img10.png", "img1.png", "IMG3.png", "img2.png", "img02.png",
-                                    "a.png"};
-  std::sort(names.begin(), names.end(),
-            [](const std::string& a, const std::string& b) { return natural_less(a, b); });
-  const std::vector<std::string> expected = {"a.png",    "img1.png", "img2.png",
-                                             "img02.png", "IMG3.png", "img10.png"};
+  std::vector<std::string> names = {"img10.png", "img1.png", "IMG3.png", "img2.png", "img02.png", "a.png"};
+  std::sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) { return natural_less(a, b); });
+  const std::vector<std::string> expected = {"a.png", "img1.png", "img2.png", "img02.png", "IMG3.png", "img10.png"};
   EXPECT_EQ(names, expected);
 }
 

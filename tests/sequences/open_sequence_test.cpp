@@ -12,10 +12,10 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::AllOf;
-using ::testing::HasSubstr;
 using test::error_of;
 using test::read_all;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 
 TEST(OpenSequence, MissingPathSaysWhatWasExpected) {
   test::TempDir dir;
@@ -41,8 +41,7 @@ TEST(OpenSequence, PicksTheReaderFromThePath) {
 
 TEST(OpenSequence, OpensEachKindAndAppliesOptions) {
   test::TempDir dir;
-  for (int i = 0; i < 4; ++i)
-    test::write_marked_image(dir / test::numbered("tum/rgb/", i, ".png"), i);
+  for (int i = 0; i < 4; ++i) test::write_marked_image(dir / test::numbered("tum/rgb/", i, ".png"), i);
   test::write_text(dir / "tum/rgb.txt", "10 rgb/0.png\n11 rgb/1.png\n12 rgb/2.png\n13 rgb/3.png\n");
   SequenceOptions options;
   options.start = 1;
@@ -66,8 +65,7 @@ TEST(OpenSequence, OpensEachKindAndAppliesOptions) {
 TEST(OpenSequence, GarbageVideoIsAnErrorNamingIt) {
   test::TempDir dir;
   test::write_garbage(dir / "clip.mp4");
-  EXPECT_THAT(error_of([&] { open_sequence(dir / "clip.mp4", {}); }),
-              HasSubstr((dir / "clip.mp4").string()));
+  EXPECT_THAT(error_of([&] { open_sequence(dir / "clip.mp4", {}); }), HasSubstr((dir / "clip.mp4").string()));
 }
 
 TEST(OpenSequence, TimestampsFileForAListIsAnError) {
@@ -78,8 +76,7 @@ TEST(OpenSequence, TimestampsFileForAListIsAnError) {
   SequenceOptions options;
   options.timestamps_file = dir / "stamps.txt";
   EXPECT_THAT(error_of([&] { open_sequence(dir.path(), options); }),
-              AllOf(HasSubstr((dir / "stamps.txt").string()),
-                    HasSubstr("applies only to an image folder")));
+              AllOf(HasSubstr((dir / "stamps.txt").string()), HasSubstr("applies only to an image folder")));
 }
 
 TEST(OpenSequence, InvalidOptionsAreAnError) {

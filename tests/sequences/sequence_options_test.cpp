@@ -32,8 +32,8 @@ TEST(SequenceOptions, StrideZeroIsAnError) {
 }
 
 TEST(SequenceOptions, NonPositiveOrNonFiniteFpsIsAnError) {
-  for (const double fps : {0.0, -5.0, std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::infinity()}) {
+  for (const double fps :
+       {0.0, -5.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     SequenceOptions options;
     options.fps = fps;
     EXPECT_THAT(message_of(options), HasSubstr("fps must be a positive number")) << fps;

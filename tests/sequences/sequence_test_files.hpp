@@ -20,8 +20,7 @@ namespace facadeslam::test {
 // prefix + number + suffix, e.g. numbered("im", 3, ".png") == "im3.png".
 // (Appending rather than `"lit" + std::to_string(n)`: GCC 12 at -O3 reports a
 // false -Wrestrict on that form.)
-inline std::string numbered(const std::string& prefix, long long number,
-                            const std::string& suffix = "") {
+inline std::string numbered(const std::string& prefix, long long number, const std::string& suffix = "") {
   std::string name = prefix;
   name += std::to_string(number);
   name += suffix;
@@ -30,8 +29,7 @@ inline std::string numbered(const std::string& prefix, long long number,
 
 // A colour image filled with (value, value + 1, value + 2), written losslessly
 // when `path` is a PNG so the reader's output can be matched to its file.
-inline void write_marked_image(const std::filesystem::path& path, int value, int width = 32,
-                               int height = 24) {
+inline void write_marked_image(const std::filesystem::path& path, int value, int width = 32, int height = 24) {
   std::filesystem::create_directories(path.parent_path());
   const cv::Mat image(height, width, CV_8UC3, cv::Scalar(value, value + 1, value + 2));
   ASSERT_TRUE(cv::imwrite(path.string(), image)) << path;

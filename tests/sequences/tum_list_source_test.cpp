@@ -15,10 +15,10 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::AllOf;
-using ::testing::HasSubstr;
 using test::error_of;
 using test::read_all;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 
 // rgb/<n>.png for n in `marks`, the i-th listed at 100 + i / 10 seconds.
 void write_list(const test::TempDir& dir, const std::vector<int>& marks) {
@@ -91,9 +91,9 @@ TEST(TumListSource, TimestampThatIsNotANumberNamesFileAndLine) {
   test::TempDir dir;
   test::write_marked_image(dir / "rgb/a.png", 1);
   test::write_text(dir / "rgb.txt", "\nrgb/a.png 1.0\n");
-  EXPECT_THAT(error_of([&] { TumListSource source(dir / "rgb.txt", {}); }),
-              AllOf(HasSubstr((dir / "rgb.txt").string()), HasSubstr("line 2"),
-                    HasSubstr("'rgb/a.png' is not a timestamp")));
+  EXPECT_THAT(
+      error_of([&] { TumListSource source(dir / "rgb.txt", {}); }),
+      AllOf(HasSubstr((dir / "rgb.txt").string()), HasSubstr("line 2"), HasSubstr("'rgb/a.png' is not a timestamp")));
 }
 
 TEST(TumListSource, NonMonotonicTimestampNamesFileAndLine) {
@@ -120,8 +120,7 @@ TEST(TumListSource, MissingImageIsAnErrorEvenUnderSkip) {
   test::write_text(dir / "rgb.txt", "1.0 rgb/1.png\n2.0 rgb/gone.png\n");
   SequenceOptions options;
   options.on_corrupt = CorruptPolicy::skip;
-  EXPECT_THAT(error_of([&] { TumListSource source(dir / "rgb.txt", options); }),
-              HasSubstr("does not exist"));
+  EXPECT_THAT(error_of([&] { TumListSource source(dir / "rgb.txt", options); }), HasSubstr("does not exist"));
 }
 
 TEST(TumListSource, ListWithoutEntriesSaysNoImagesFound) {
@@ -168,8 +167,7 @@ TEST(TumListSource, ImageOfAnotherSizeNamesItAndBothSizes) {
   TumListSource source(dir / "rgb.txt", {});
   ASSERT_TRUE(source.next().has_value());
   EXPECT_THAT(error_of([&] { source.next(); }),
-              AllOf(HasSubstr((dir / "rgb/b.png").string()), HasSubstr("16x12"),
-                    HasSubstr("32x24")));
+              AllOf(HasSubstr((dir / "rgb/b.png").string()), HasSubstr("16x12"), HasSubstr("32x24")));
 }
 
 // Issue 41: listed paths stay inside the list's folder unless allowed.

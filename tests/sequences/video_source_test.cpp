@@ -14,10 +14,10 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::AllOf;
-using ::testing::HasSubstr;
 using test::error_of;
 using test::read_all;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 
 constexpr int kFrames = 12;
 const cv::Size kSize(160, 120);
@@ -33,8 +33,8 @@ bool write_test_video(const fs::path& path) {
   return true;
 }
 
-#define WRITE_VIDEO_OR_SKIP(path)                                                       \
-  if (!write_test_video(path))                                                          \
+#define WRITE_VIDEO_OR_SKIP(path)                                                      \
+  if (!write_test_video(path))                                                         \
   GTEST_SKIP() << "this OpenCV build cannot write MJPG .avi files (no videoio writer " \
                   "backend), so there is no video to read back"
 
@@ -96,8 +96,7 @@ TEST(VideoSource, FileThatIsNotAVideoNamesIt) {
   test::TempDir dir;
   test::write_garbage(dir / "broken.avi");
   EXPECT_THAT(error_of([&] { VideoSource source(dir / "broken.avi", {}); }),
-              AllOf(HasSubstr((dir / "broken.avi").string()),
-                    HasSubstr("expected a video file readable by OpenCV")));
+              AllOf(HasSubstr((dir / "broken.avi").string()), HasSubstr("expected a video file readable by OpenCV")));
 }
 
 TEST(VideoSource, MissingFileNamesIt) {

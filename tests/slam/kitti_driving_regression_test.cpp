@@ -42,8 +42,8 @@ DrivingRun drive(const fs::path& dir, SlamOptions options) {
   DrivingRun run;
   run.frames = log.frames.size();
   for (const FrameReport& f : log.frames) {
-    const bool after = f.status == FrameStatus::tracking || f.status == FrameStatus::relocalised ||
-                       f.status == FrameStatus::lost;
+    const bool after =
+        f.status == FrameStatus::tracking || f.status == FrameStatus::relocalised || f.status == FrameStatus::lost;
     run.after_initialisation += after;
     run.tracked += f.status == FrameStatus::tracking;
     run.relocalised += f.status == FrameStatus::relocalised;
@@ -56,13 +56,13 @@ DrivingRun drive(const fs::path& dir, SlamOptions options) {
 }
 
 void expect_driven(const std::string& name, const DrivingRun& run) {
-  const double share = run.after_initialisation
-                           ? static_cast<double>(run.tracked) / static_cast<double>(run.after_initialisation)
-                           : 0.0;
-  std::printf("[  FIGURES ] %s: %zu frames, %zu after initialisation, %zu tracked (%.1f %%), %zu relocalised, "
-              "%zu map resets, ATE (Sim3) %.3f m = %.3f %% of the %.1f m path over %zu poses\n",
-              name.c_str(), run.frames, run.after_initialisation, run.tracked, 100.0 * share, run.relocalised,
-              run.resets, run.ate.ate_rmse_m, run.ate.ate_percent_of_path, run.ate.path_length_m, run.ate.pairs);
+  const double share =
+      run.after_initialisation ? static_cast<double>(run.tracked) / static_cast<double>(run.after_initialisation) : 0.0;
+  std::printf(
+      "[  FIGURES ] %s: %zu frames, %zu after initialisation, %zu tracked (%.1f %%), %zu relocalised, "
+      "%zu map resets, ATE (Sim3) %.3f m = %.3f %% of the %.1f m path over %zu poses\n",
+      name.c_str(), run.frames, run.after_initialisation, run.tracked, 100.0 * share, run.relocalised, run.resets,
+      run.ate.ate_rmse_m, run.ate.ate_percent_of_path, run.ate.path_length_m, run.ate.pairs);
   for (const KittiLengthError& e : run.relative.per_length)
     std::printf("[  FIGURES ] %s: KITTI relative error over %.0f m (%zu segments): %.2f %%, %.3f deg/100 m\n",
                 name.c_str(), e.length_m, e.pairs, e.translation_percent, e.rotation_deg_per_100m);
@@ -76,8 +76,8 @@ void expect_driven(const std::string& name, const DrivingRun& run) {
 
 TEST(KittiDrivingRegression, Kitti00ThroughTwoTurnsWithoutLabels) {
   FACADESLAM_REQUIRE_SHARED_DATA("kitti00-300");
-  expect_driven("kitti00-300, semantics off", drive(test::shared_data_dir() / "kitti00-300",
-                                                    test::synchronous_options()));
+  expect_driven("kitti00-300, semantics off",
+                drive(test::shared_data_dir() / "kitti00-300", test::synchronous_options()));
 }
 
 TEST(KittiDrivingRegression, Kitti00ThroughTwoTurnsWithLabels) {

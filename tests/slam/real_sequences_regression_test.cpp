@@ -104,9 +104,12 @@ TEST(RealSequenceRegression, TempleRingCentresWithinTwoPercentOfTheRingDiameter)
 
   std::vector<std::size_t> tracked, relocalised, lost;
   for (const FrameReport& f : log.frames) {
-    if (f.status == FrameStatus::relocalised) relocalised.push_back(f.index);
-    else if (f.has_pose) tracked.push_back(f.index);
-    else if (static_cast<int>(f.index) > log.initialised_at()) lost.push_back(f.index);
+    if (f.status == FrameStatus::relocalised)
+      relocalised.push_back(f.index);
+    else if (f.has_pose)
+      tracked.push_back(f.index);
+    else if (static_cast<int>(f.index) > log.initialised_at())
+      lost.push_back(f.index);
   }
   ASSERT_GE(log.estimate.size(), 3u);
   const TrajectoryEvaluation ate = evaluate_trajectory(gt, log.estimate, {});
@@ -128,8 +131,7 @@ TEST(RealSequenceRegression, TempleRingCentresWithinTwoPercentOfTheRingDiameter)
 
 TEST(RealSequenceRegression, VispCubeTracksNinetyPercentWithMedianErrorBelowOnePointFivePixels) {
   FACADESLAM_REQUIRE_SHARED_DATA("visp-cube");
-  System system(load_camera(test::source_dir() / "configs" / "camera" / "visp-cube.yaml"),
-                test::synchronous_options());
+  System system(load_camera(test::source_dir() / "configs" / "camera" / "visp-cube.yaml"), test::synchronous_options());
   const test::SlamRunLog log = run_folder(system, test::shared_data_dir() / "visp-cube");
   ASSERT_TRUE(system.initialised()) << "the cube video never initialised";
 
@@ -178,10 +180,11 @@ TEST(RealSequenceRegression, KittiSnippetInitialisesEarlyAndTracksWithinTwoPerce
   const double share = after ? static_cast<double>(tracked) / static_cast<double>(after) : 0.0;
   ASSERT_GE(log.estimate.size(), 3u);
   const TrajectoryEvaluation ate = evaluate_trajectory(read_trajectory(dir / "groundtruth.txt"), log.estimate, {});
-  std::printf("[  FIGURES ] kitti06-snippet: %zu frames, initialised at frame %d, %zu of the %zu after it tracked "
-              "(%.1f %%), %zu keyframes, ATE (Sim3) %.4f m = %.3f %% of the %.2f m path\n",
-              log.frames.size(), log.initialised_at(), tracked, after, 100.0 * share, system.map().keyframe_count(),
-              ate.ate_rmse_m, ate.ate_percent_of_path, ate.path_length_m);
+  std::printf(
+      "[  FIGURES ] kitti06-snippet: %zu frames, initialised at frame %d, %zu of the %zu after it tracked "
+      "(%.1f %%), %zu keyframes, ATE (Sim3) %.4f m = %.3f %% of the %.2f m path\n",
+      log.frames.size(), log.initialised_at(), tracked, after, 100.0 * share, system.map().keyframe_count(),
+      ate.ate_rmse_m, ate.ate_percent_of_path, ate.path_length_m);
   const TrajectoryEvaluation final_ate =
       evaluate_trajectory(read_trajectory(dir / "groundtruth.txt"), system.final_trajectory(), {});
   test::report_final_figures("kitti06-snippet", final_ate, ate);
@@ -217,9 +220,10 @@ TEST(RealSequenceRegression, KittiSnippetIsLabelledByTheGreyModelAndStillTracked
     ++counts[std::string(kSemanticClasses[label.label].name)];
   }
   for (const FrameReport& f : log.frames) down_weighted += static_cast<std::size_t>(f.tracking.points_down_weighted);
-  std::printf("[  FIGURES ] kitti06-snippet, semantics on: %zu of the %zu frames after initialisation tracked, ATE "
-              "%.3f %% of the path; %zu of %zu points labelled:",
-              tracked, after, ate.ate_percent_of_path, labelled, points);
+  std::printf(
+      "[  FIGURES ] kitti06-snippet, semantics on: %zu of the %zu frames after initialisation tracked, ATE "
+      "%.3f %% of the path; %zu of %zu points labelled:",
+      tracked, after, ate.ate_percent_of_path, labelled, points);
   for (const auto& [name, count] : counts) std::printf(" %s %zu", name.c_str(), count);
   std::printf("; %zu measurements down-weighted for their class\n", down_weighted);
   const auto stats = system.semantic_stats();

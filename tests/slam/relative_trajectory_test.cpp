@@ -24,7 +24,8 @@ SE3d pose(double tx, double ty, double tz, double rx, double ry, double rz) {
 
 std::shared_ptr<KeyFrame> make_keyframe(Map& map, std::size_t frame_index, const SE3d& T_c_w) {
   const cv::Mat colour(120, 160, CV_8UC3, cv::Scalar(90, 120, 150));
-  const Frame frame{frame_index, static_cast<double>(frame_index), colour, {}, std::make_shared<const ImagePyramid>(colour)};
+  const Frame frame{
+      frame_index, static_cast<double>(frame_index), colour, {}, std::make_shared<const ImagePyramid>(colour)};
   auto keyframe = std::make_shared<KeyFrame>(map.new_keyframe_id(), frame, T_c_w);
   map.add_keyframe(keyframe);
   return keyframe;

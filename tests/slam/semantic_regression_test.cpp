@@ -46,10 +46,11 @@ SemanticRun run_scene(const std::string& name, bool semantics_on) {
     run.dropped += static_cast<std::size_t>(f.tracking.points_dropped + f.tracking.points_down_weighted);
   test::report_figures(name + (semantics_on ? ", semantics on" : ", semantics off"), run.log, run.ate);
   if (semantics_on) {
-    std::printf("[  FIGURES ] %s labels: %zu of %zu points labelled, label accuracy %.3f over %zu points; per true "
-                "class:",
-                name.c_str(), run.points - run.labels.unlabelled, run.points, run.labels.accuracy().value_or(0.0),
-                run.labels.evaluated);
+    std::printf(
+        "[  FIGURES ] %s labels: %zu of %zu points labelled, label accuracy %.3f over %zu points; per true "
+        "class:",
+        name.c_str(), run.points - run.labels.unlabelled, run.points, run.labels.accuracy().value_or(0.0),
+        run.labels.evaluated);
     for (const SemanticClass& c : kSemanticClasses)
       if (const auto share = run.labels.class_accuracy(c.id))
         std::printf(" %s %.2f (%zu)", std::string(c.name).c_str(), *share, run.labels.per_class_points[c.id]);
@@ -57,8 +58,8 @@ SemanticRun run_scene(const std::string& name, bool semantics_on) {
     std::printf("[  FIGURES ] %s labels, commonest mistake per true class:", name.c_str());
     for (const SemanticClass& c : kSemanticClasses)
       if (const auto mistake = run.labels.commonest_mistake(c.id))
-        std::printf(" %s -> %s (%zu)", std::string(c.name).c_str(), std::string(kSemanticClasses[mistake->first].name).c_str(),
-                    mistake->second);
+        std::printf(" %s -> %s (%zu)", std::string(c.name).c_str(),
+                    std::string(kSemanticClasses[mistake->first].name).c_str(), mistake->second);
     std::printf("\n");
   }
   std::fflush(stdout);
@@ -110,7 +111,8 @@ class TrueLabeller {
  public:
   void label_new_points(const Map& map, const test::SceneFrames& scene) {
     std::map<KeyFrame::Id, std::size_t> frame_of;
-    for (const KeyFrameSnapshot& kf : map.snapshot_keyframes()) frame_of[kf.keyframe->id()] = kf.keyframe->frame_index();
+    for (const KeyFrameSnapshot& kf : map.snapshot_keyframes())
+      frame_of[kf.keyframe->id()] = kf.keyframe->frame_index();
     for (const PointSnapshot& p : map.snapshot_points()) {
       const auto frame = frame_of.find(p.source.keyframe_id);
       if (frame == frame_of.end() || !labelled_.insert(p.point->id()).second) continue;
@@ -174,11 +176,12 @@ TEST(SemanticRegression, StreetTrafficPullsTheTrackerOffAndLabelsBringItBack) {
   const SemanticRun off = run_scene("street-traffic", false);
   const SemanticRun on = run_scene("street-traffic", true);
   const SemanticRun truth = run_with_true_labels("street-traffic");
-  std::printf("[  FIGURES ] street-traffic: ATE %.3f %% with the forest's labels, %.3f %% with true labels, "
-              "%.3f %% without labels, static twin %.3f %%; lost %zu / %zu / %zu; map points %zu / %zu / %zu / %zu\n",
-              on.ate.ate_percent_of_path, truth.ate.ate_percent_of_path, off.ate.ate_percent_of_path,
-              twin.ate.ate_percent_of_path, on.log.lost_frames().size(), truth.log.lost_frames().size(),
-              off.log.lost_frames().size(), on.points, truth.points, off.points, twin.points);
+  std::printf(
+      "[  FIGURES ] street-traffic: ATE %.3f %% with the forest's labels, %.3f %% with true labels, "
+      "%.3f %% without labels, static twin %.3f %%; lost %zu / %zu / %zu; map points %zu / %zu / %zu / %zu\n",
+      on.ate.ate_percent_of_path, truth.ate.ate_percent_of_path, off.ate.ate_percent_of_path,
+      twin.ate.ate_percent_of_path, on.log.lost_frames().size(), truth.log.lost_frames().size(),
+      off.log.lost_frames().size(), on.points, truth.points, off.points, twin.points);
   EXPECT_TRUE(twin.log.lost_frames().empty());
   EXPECT_GE(off.ate.ate_percent_of_path, 2.0 * twin.ate.ate_percent_of_path);
   EXPECT_TRUE(truth.log.lost_frames().empty());

@@ -108,10 +108,11 @@ void report_figures(const std::string& name, const SlamRunLog& log, const Trajec
 
 void report_final_figures(const std::string& name, const TrajectoryEvaluation& final_ate,
                           const TrajectoryEvaluation& online_ate) {
-  std::printf("[  FIGURES ] %s: final trajectory (recomposed from the final map) ATE (Sim3) %.4f m = %.3f %% of the "
-              "%.2f m path; as tracked %.3f %%\n",
-              name.c_str(), final_ate.ate_rmse_m, final_ate.ate_percent_of_path, final_ate.path_length_m,
-              online_ate.ate_percent_of_path);
+  std::printf(
+      "[  FIGURES ] %s: final trajectory (recomposed from the final map) ATE (Sim3) %.4f m = %.3f %% of the "
+      "%.2f m path; as tracked %.3f %%\n",
+      name.c_str(), final_ate.ate_rmse_m, final_ate.ate_percent_of_path, final_ate.path_length_m,
+      online_ate.ate_percent_of_path);
   std::fflush(stdout);
   ::testing::Test::RecordProperty("final_ate_rmse_m", std::to_string(final_ate.ate_rmse_m));
   ::testing::Test::RecordProperty("final_ate_percent_of_path", std::to_string(final_ate.ate_percent_of_path));

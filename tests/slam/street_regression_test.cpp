@@ -141,9 +141,10 @@ TEST(StreetRegression, RelocalisesWithinTenFramesAfterTenBlackFrames) {
     if (back_at >= 0 && !f.has_pose) lost_outside.push_back(f.index);
   }
   const int delay = back_at < 0 ? -1 : back_at - (kFirstBlack + kBlackFrames);
-  std::printf("[  FIGURES ] forced loss: frames %d-%d black, tracking again at frame %d (%d frames after the real "
-              "images returned)\n",
-              kFirstBlack, kFirstBlack + kBlackFrames - 1, back_at, delay);
+  std::printf(
+      "[  FIGURES ] forced loss: frames %d-%d black, tracking again at frame %d (%d frames after the real "
+      "images returned)\n",
+      kFirstBlack, kFirstBlack + kBlackFrames - 1, back_at, delay);
   ::testing::Test::RecordProperty("relocalisation_delay_frames", delay);
   ASSERT_GE(back_at, 0) << "never relocalised";
   EXPECT_LT(delay, 10);
@@ -188,9 +189,10 @@ TEST(StreetRegression, MapSavedMidSequenceKeepsTrackingInANewSystem) {
       resumed_at = static_cast<int>(f.index);
       break;
     }
-  std::printf("[  FIGURES ] save/load: map of %zu keyframes, %zu points saved at frame %d; the new system tracks "
-              "from frame %d\n",
-              saved_keyframes, saved_points, kSplit, resumed_at);
+  std::printf(
+      "[  FIGURES ] save/load: map of %zu keyframes, %zu points saved at frame %d; the new system tracks "
+      "from frame %d\n",
+      saved_keyframes, saved_points, kSplit, resumed_at);
   ASSERT_GE(resumed_at, 0) << "the new system never localised against the loaded map";
   EXPECT_LT(resumed_at, kSplit + 10);
   EXPECT_TRUE(second.lost_frames().empty()) << "lost after resuming: " << list(second.lost_frames());

@@ -64,7 +64,8 @@ TEST(System, SameInputGivesTheSameResultBitForBit) {
     System system(scene.camera(), test::synchronous_options());
     std::vector<SE3d> poses;
     for (int i = 0; i < scene.size(); ++i) {
-      const FrameReport r = system.process({static_cast<std::size_t>(i), scene.timestamp(i), frames[static_cast<std::size_t>(i)]});
+      const FrameReport r =
+          system.process({static_cast<std::size_t>(i), scene.timestamp(i), frames[static_cast<std::size_t>(i)]});
       if (r.has_pose) poses.push_back(r.T_c_w);
     }
     return poses;
@@ -183,8 +184,8 @@ TEST(System, SemanticWorkerLabelsTheNewPoints) {
 // (slam.yaml's map_reset): black frames soon after initialisation make the
 // young map lost; after young_map_lost_frames it is reset, start-up begins
 // again on the real images; the trajectories hold the new map's frames, and
-// the first map's poses are kept as a segment of their own. Both modes: threaded, the reset stops and restarts the map maker's
-// thread (the ThreadSanitizer build runs this test too).
+// the first map's poses are kept as a segment of their own. Both modes: threaded, the reset stops and restarts the map
+// maker's thread (the ThreadSanitizer build runs this test too).
 TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
   test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 100);
   for (const bool synchronous : {true, false}) {

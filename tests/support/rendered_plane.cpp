@@ -32,8 +32,7 @@ Camera test_camera() { return Camera(640, 480, PinholeRadTan{500.0, 500.0, 319.5
 cv::Mat render(const RenderedPlane& plane, const Camera& camera, const SE3d& T_c_w) {
   constexpr int k = 4;  // supersampling factor
   Eigen::Matrix3d K_k;
-  K_k << k * camera.fx(), 0, (camera.cx() + 0.5) * k - 0.5, 0, k * camera.fy(), (camera.cy() + 0.5) * k - 0.5, 0, 0,
-      1;
+  K_k << k * camera.fx(), 0, (camera.cx() + 0.5) * k - 0.5, 0, k * camera.fy(), (camera.cy() + 0.5) * k - 0.5, 0, 0, 1;
   const Eigen::Matrix3d R = T_c_w.rotation_matrix();
   Eigen::Matrix3d P;  // plane (X, Y, 1) -> camera, for points (X, Y, plane_depth)
   P.col(0) = R.col(0);
@@ -54,9 +53,9 @@ cv::Mat render(const RenderedPlane& plane, const Camera& camera, const SE3d& T_c
 }
 
 SE3d view_pose(const RenderedPlane& plane, double distance, double roll, double tilt, double dx, double dy) {
-  const Eigen::Matrix3d R_w_c = (Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitX()) *
-                                 Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()))
-                                    .toRotationMatrix();
+  const Eigen::Matrix3d R_w_c =
+      (Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
   const Eigen::Vector3d target(dx, dy, plane.plane_depth);
   const Eigen::Vector3d centre = target - distance * R_w_c.col(2);
   const Eigen::Matrix3d R_c_w = R_w_c.transpose();

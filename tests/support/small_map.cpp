@@ -20,7 +20,8 @@ void build_test_map(Map& map, int n_points, const Camera& camera) {
       for (int x = 0; x < colour.cols; ++x)
         colour.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<std::uint8_t>(pixel(rng)), static_cast<std::uint8_t>(x),
                                                static_cast<std::uint8_t>(y));
-    frames.push_back({static_cast<std::size_t>(7 + 3 * k), 10.0 + k, colour, {}, std::make_shared<const ImagePyramid>(colour)});
+    frames.push_back(
+        {static_cast<std::size_t>(7 + 3 * k), 10.0 + k, colour, {}, std::make_shared<const ImagePyramid>(colour)});
     poses.push_back(SE3d::exp((Eigen::Matrix<double, 6, 1>() << 0.1 * k, 0.02, -0.03, 0.01, 0.05 * k, 0).finished()));
   }
   // The keyframes' measurements, made before the keyframes (ids come first).

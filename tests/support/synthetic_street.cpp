@@ -74,8 +74,7 @@ StreetScene make_street_scene(const StreetSceneOptions& options, const Camera& c
   return scene;
 }
 
-void perturb_free_blocks(BaProblem& problem, double rotation_rad, double translation_m, double point_m,
-                         unsigned seed) {
+void perturb_free_blocks(BaProblem& problem, double rotation_rad, double translation_m, double point_m, unsigned seed) {
   std::mt19937 rng(seed);
   for (BaKeyFrame& kf : problem.keyframes) {
     if (kf.fixed) continue;

@@ -18,20 +18,20 @@ namespace facadeslam {
 
 struct StreetSceneOptions {
   int keyframes = 8;
-  double spacing = 1.0;          // distance between consecutive camera centres along x (m)
-  double facade_distance = 8.0;  // from the cameras to the facade plane (m)
-  double relief = 0.5;           // points lie within +-relief of the plane (m)
-  int points = 1000;             // drawn over the facade span the cameras see
-  double rotation_jitter = 0.05; // random rotation of each camera (rad)
-  double height_jitter = 0.1;    // random height change of each camera (m)
-  int levels = 1;                // observations get random pyramid levels in [0, levels)
+  double spacing = 1.0;           // distance between consecutive camera centres along x (m)
+  double facade_distance = 8.0;   // from the cameras to the facade plane (m)
+  double relief = 0.5;            // points lie within +-relief of the plane (m)
+  int points = 1000;              // drawn over the facade span the cameras see
+  double rotation_jitter = 0.05;  // random rotation of each camera (rad)
+  double height_jitter = 0.1;     // random height change of each camera (m)
+  int levels = 1;                 // observations get random pyramid levels in [0, levels)
   unsigned seed = 1;
 };
 
 struct StreetScene {
-  BaProblem problem;                     // exact: every observation is the true projection
-  std::vector<SE3d> true_T_c_w;          // per keyframe
-  std::vector<Eigen::Vector3d> true_p_w; // per point
+  BaProblem problem;                      // exact: every observation is the true projection
+  std::vector<SE3d> true_T_c_w;           // per keyframe
+  std::vector<Eigen::Vector3d> true_p_w;  // per point
 };
 
 // Keyframe i has id i, point j has id j; no block is fixed. Points seen by
@@ -44,8 +44,7 @@ StreetScene make_street_scene(const StreetSceneOptions& options, const Camera& c
 // Moves every free keyframe by a rotation of `rotation_rad` about a random
 // axis and a translation of `translation_m` in a random direction (left
 // update), and every free point by `point_m` in a random direction.
-void perturb_free_blocks(BaProblem& problem, double rotation_rad, double translation_m, double point_m,
-                         unsigned seed);
+void perturb_free_blocks(BaProblem& problem, double rotation_rad, double translation_m, double point_m, unsigned seed);
 
 // Adds Gaussian noise of sigma_px * 2^level to each observation's pixel (per axis).
 void add_pixel_noise(BaProblem& problem, double sigma_px, unsigned seed);

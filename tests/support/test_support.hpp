@@ -51,10 +51,9 @@ std::string error_of(Body&& body) {
 
 // Skips the current test, with a message naming the folder, when
 // ../shared/data/<sub> is not there (a user's fresh clone).
-#define FACADESLAM_REQUIRE_SHARED_DATA(sub)                                                   \
-  do {                                                                                        \
-    if (::facadeslam::test::shared_data_dir().empty() ||                                      \
-        !std::filesystem::exists(::facadeslam::test::shared_data_dir() / (sub)))              \
-      GTEST_SKIP() << "needs ../shared/data/" << (sub)                                        \
-                   << " (the project's shared datasets), which is absent here";               \
+#define FACADESLAM_REQUIRE_SHARED_DATA(sub)                                                                         \
+  do {                                                                                                              \
+    if (::facadeslam::test::shared_data_dir().empty() ||                                                            \
+        !std::filesystem::exists(::facadeslam::test::shared_data_dir() / (sub)))                                    \
+      GTEST_SKIP() << "needs ../shared/data/" << (sub) << " (the project's shared datasets), which is absent here"; \
   } while (0)

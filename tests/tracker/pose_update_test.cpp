@@ -202,8 +202,7 @@ TEST(PoseUpdate, RejectsALevelOutsideThePyramid) {
 
 TEST(PoseMeasurementJacobian, MatchesCentralDifferencesForEveryCameraModel) {
   const std::vector<Camera> cameras = {
-      test::test_camera(),
-      Camera(640, 480, PinholeRadTan{480.0, 470.0, 321.0, 243.0, -0.2, 0.05, 0.001, -0.002, 0.01}),
+      test::test_camera(), Camera(640, 480, PinholeRadTan{480.0, 470.0, 321.0, 243.0, -0.2, 0.05, 0.001, -0.002, 0.01}),
       Camera(640, 480, AtanCamera{400.0, 410.0, 318.0, 241.0, 0.9})};
   const SE3d T = true_pose();
   const Eigen::Vector3d p_w = T.inverse() * Eigen::Vector3d(0.4, -0.3, 2.5);

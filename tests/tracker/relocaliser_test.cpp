@@ -73,8 +73,9 @@ TEST(Relocaliser, PicksTheRightKeyframeAndRecoversTheRotation) {
   const Camera camera = test_camera();
   std::vector<KeyFrameSnapshot> keyframes;
   for (int k = 0; k < 3; ++k)
-    keyframes.push_back(keyframe_from(random_scene(10 + k), static_cast<KeyFrame::Id>(k),
-                                      SE3d::exp((Eigen::Matrix<double, 6, 1>() << k, 0.5 * k, 0, 0, 0.1 * k, 0).finished())));
+    keyframes.push_back(
+        keyframe_from(random_scene(10 + k), static_cast<KeyFrame::Id>(k),
+                      SE3d::exp((Eigen::Matrix<double, 6, 1>() << k, 0.5 * k, 0, 0, 0.1 * k, 0).finished())));
   const SO3d R_true = SO3d::exp(Eigen::Vector3d(1.5 * kDeg, -2.5 * kDeg, 2.0 * kDeg));
   const cv::Mat current = rotate_view(random_scene(11), R_true, camera);
   const cv::Mat sbi = make_small_blurry_image(ImagePyramid(current));

@@ -33,8 +33,8 @@ class PlaneTracking : public ::testing::Test {
         measurements[point->id()] = {level, p.source.pixel_level0, true};
         points.push_back(std::move(point));
       }
-    keyframe_ = std::make_shared<KeyFrame>(keyframe_id, Frame{0, 0.0, cv::Mat(), {}, pyramid}, SE3d(),
-                                           std::move(measurements));
+    keyframe_ =
+        std::make_shared<KeyFrame>(keyframe_id, Frame{0, 0.0, cv::Mat(), {}, pyramid}, SE3d(), std::move(measurements));
     map_.add({keyframe_}, points);
     map_.update([&](MapEditor& edit) { edit.set_depth_stats(*keyframe_, plane_.plane_depth, 0.0); });
   }
@@ -90,8 +90,8 @@ TEST_F(PlaneTracking, AsksForAKeyframeOnlyAfterMovingFarEnough) {
   tracker.start(SE3d(), 0);
   int first_request = -1;
   for (int i = 1; i <= 40 && first_request < 0; ++i) {
-    const TrackingResult r = tracker.track(
-        frame(static_cast<std::size_t>(i), test::render(plane_, camera_, path_pose(i))));
+    const TrackingResult r =
+        tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, path_pose(i))));
     ASSERT_TRUE(r.tracked) << "frame " << i;
     if (r.keyframe_requested) first_request = i;
   }
@@ -122,7 +122,8 @@ TEST_F(PlaneTracking, AsksForAKeyframeWhenTheViewLeavesTheMap) {
     tracker.start(SE3d(), 0);
     int first_request = -1, found_first = 0, found_at_request = 0;
     for (int i = 1; i <= 25 && first_request < 0; ++i) {
-      const TrackingResult r = tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, sliding(i))));
+      const TrackingResult r =
+          tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, sliding(i))));
       ASSERT_TRUE(r.tracked) << "frame " << i;
       if (i == 1) found_first = r.fine_found;
       if (r.keyframe_requested) {
@@ -145,7 +146,9 @@ TEST_F(PlaneTracking, AsksForAKeyframeWhenTheViewLeavesTheMap) {
 // Turning on the spot: PTAM's distance rule never fires, the angle rule does
 // once the optical axis has turned past keyframe_min_angle_deg.
 TEST_F(PlaneTracking, AsksForAKeyframeWhenTurningOnTheSpot) {
-  const auto turned = [](int i) { return SE3d(SO3d::exp(Eigen::Vector3d(0, 0.25 * i * M_PI / 180.0, 0)), Eigen::Vector3d::Zero()); };
+  const auto turned = [](int i) {
+    return SE3d(SO3d::exp(Eigen::Vector3d(0, 0.25 * i * M_PI / 180.0, 0)), Eigen::Vector3d::Zero());
+  };
   for (const double min_angle : {5.0, 180.0}) {
     TrackerOptions options;
     options.keyframe_min_frames = 5;
@@ -178,8 +181,7 @@ TEST_F(PlaneTracking, LosesABlankFrameAndRelocalisesOnTheNextRealOne) {
   Tracker tracker(camera_, map_, queue_, TrackerOptions{});
   tracker.start(SE3d(), 0);
   for (int i = 1; i <= 5; ++i)
-    ASSERT_TRUE(tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, path_pose(i))))
-                    .tracked);
+    ASSERT_TRUE(tracker.track(frame(static_cast<std::size_t>(i), test::render(plane_, camera_, path_pose(i)))).tracked);
   const cv::Mat blank(camera_.height(), camera_.width(), CV_8UC1, cv::Scalar(0));
   for (int i = 6; i <= 8; ++i) {
     const TrackingResult r = tracker.track(frame(static_cast<std::size_t>(i), blank));
@@ -207,7 +209,6 @@ TEST_F(PlaneTracking, IsLostWhenNothingOfTheMapIsInView) {
   EXPECT_EQ(r.fine_counts.projected, 0);
   EXPECT_TRUE(tracker.is_lost());
 }
-
 
 // Label-aware tracking on a scene where nothing moves: the points labelled
 // with an unreliable class stand exactly where the pose puts them, so the

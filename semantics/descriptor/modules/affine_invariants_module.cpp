@@ -18,8 +18,7 @@ double affine_invariant(const PatchMoments& m, int k) {
   const auto u = [&](int p, int q) { return m.mu[p][q]; };
   const double u20 = u(2, 0), u11 = u(1, 1), u02 = u(0, 2);
   switch (k) {
-    case 1:
-      return (u20 * u02 - u11 * u11) / m.mass_powers[4];
+    case 1: return (u20 * u02 - u11 * u11) / m.mass_powers[4];
     case 2: {
       const double u30 = u(3, 0), u21 = u(2, 1), u12 = u(1, 2), u03 = u(0, 3);
       return (-u30 * u30 * u03 * u03 + 6 * u30 * u21 * u12 * u03 - 4 * u30 * u12 * u12 * u12 -
@@ -53,8 +52,8 @@ double affine_invariant(const PatchMoments& m, int k) {
     }
     case 7: {
       const double u40 = u(4, 0), u31 = u(3, 1), u22 = u(2, 2), u13 = u(1, 3), u04 = u(0, 4);
-      return (u20 * u20 * u04 - 4 * u20 * u11 * u13 + 2 * u20 * u02 * u22 + 4 * u11 * u11 * u22 -
-              4 * u11 * u02 * u31 + u02 * u02 * u40) /
+      return (u20 * u20 * u04 - 4 * u20 * u11 * u13 + 2 * u20 * u02 * u22 + 4 * u11 * u11 * u22 - 4 * u11 * u02 * u31 +
+              u02 * u02 * u40) /
              m.mass_powers[7];
     }
     case 8: {
@@ -85,8 +84,7 @@ double affine_invariant(const PatchMoments& m, int k) {
               48 * u41 * u23 * u23 * u23 - 48 * u32 * u32 * u32 * u14 + 32 * u32 * u32 * u23 * u23) /
              m.mass_powers[14];
     }
-    default:
-      CV_Error(cv::Error::StsOutOfRange, "affine invariant index must be 1..10");
+    default: CV_Error(cv::Error::StsOutOfRange, "affine invariant index must be 1..10");
   }
 }
 

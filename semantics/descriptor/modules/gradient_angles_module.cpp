@@ -66,8 +66,7 @@ void gradient_angles_module(const ModuleContext& context, std::uint64_t bits, fl
     for (int k = 0; k < 5; ++k)
       if (bit_set(means, k)) values[5 * c + k] = static_cast<float>(m[static_cast<std::size_t>(k)]);
     for (int k = 0; k < 10; ++k)
-      if (bit_set(differences, k))
-        values[15 + 10 * c + k] = static_cast<float>(m[kPairs[k][0]] - m[kPairs[k][1]]);
+      if (bit_set(differences, k)) values[15 + 10 * c + k] = static_cast<float>(m[kPairs[k][0]] - m[kPairs[k][1]]);
   }
 }
 

@@ -21,7 +21,7 @@ struct ModuleContext {
   int x = 0, y = 0;      // the patch centre: the pixel nearest to the keypoint
   int radius = 0;
   const std::array<PatchMoments, 3>& moments;  // per colour channel (order -1 = not computed)
-  const StripSums* strip = nullptr;  // column sums of this keypoint's row, where extraction shares them
+  const StripSums* strip = nullptr;            // column sums of this keypoint's row, where extraction shares them
   // This keypoint's nine singular-value module values, where extraction
   // computed them in batches (singular_values_module.hpp); else null.
   const float* singular_values = nullptr;

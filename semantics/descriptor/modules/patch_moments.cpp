@@ -23,8 +23,7 @@ constexpr int kMaxOrder = kMaxMomentOrder;
 // the strip (moment_column_sums) both call this, so a column's sums are the
 // same bits either way.
 template <int Order>
-[[gnu::always_inline]] inline void column_block(const float* centre, std::ptrdiff_t stride, int r,
-                                                FloatLanes* column) {
+[[gnu::always_inline]] inline void column_block(const float* centre, std::ptrdiff_t stride, int r, FloatLanes* column) {
   load_lanes(column[0], centre);
   for (int q = 1; q <= Order; ++q) column[q] = FloatLanes{};
   for (int d = 1; d <= r; ++d) {
@@ -32,8 +31,8 @@ template <int Order>
     weights[0] = 1.0f;
     for (int q = 1; q <= Order; ++q) weights[q] = weights[q - 1] * static_cast<float>(d);
     FloatLanes lower, upper;
-    load_lanes(lower, centre + d * stride);   // y = +d
-    load_lanes(upper, centre - d * stride);   // y = -d
+    load_lanes(lower, centre + d * stride);  // y = +d
+    load_lanes(upper, centre - d * stride);  // y = -d
     const FloatLanes even = lower + upper;
     const FloatLanes odd = lower - upper;
     for (int q = 0; q <= Order; ++q) column[q] += weights[q] * ((q & 1) ? odd : even);
@@ -225,26 +224,28 @@ void compute_patch_moments(const PatchView& patch, int order, PatchMoments& out)
   // Not cleared first: every entry up to `order` is written below (clearing
   // the whole struct cost more than the low orders themselves).
   out.order = order;
-  with_order(order, [&]<int Order>() __attribute__((always_inline)) { moments_of_order<Order>(patch, out); });
+  with_order(
+      order, [&]<int Order>() __attribute__((always_inline)) { moments_of_order<Order>(patch, out); });
 }
 
 FACADESLAM_KERNEL
 void moment_column_sums(const float* centre, std::ptrdiff_t stride, int r, int order, int count, float* columns) {
-  with_order(order, [&]<int Order>() __attribute__((always_inline)) {
-    column_sums_of_order<Order>(centre, stride, r, count, columns);
-  });
+  with_order(
+      order, [&]<int Order>()
+                 __attribute__((always_inline)) { column_sums_of_order<Order>(centre, stride, r, count, columns); });
 }
 
 FACADESLAM_KERNEL
 void patch_moments_from_columns(const float* columns, int r, int order, PatchMoments& out) {
   out.order = order;
-  with_order(order, [&]<int Order>() __attribute__((always_inline)) { moments_of_columns<Order>(columns, r, out); });
+  with_order(
+      order, [&]<int Order>() __attribute__((always_inline)) { moments_of_columns<Order>(columns, r, out); });
 }
 
-void central_moments_from_raw(const double (*raw)[kMaxMomentOrder + 1], int order,
-                              double (*mu)[kMaxMomentOrder + 1]) {
+void central_moments_from_raw(const double (*raw)[kMaxMomentOrder + 1], int order, double (*mu)[kMaxMomentOrder + 1]) {
   const double cx = raw[1][0] / raw[0][0], cy = raw[0][1] / raw[0][0];
-  with_order(order, [&]<int Order>() __attribute__((always_inline)) { central_moments<Order>(raw, cx, cy, mu); });
+  with_order(
+      order, [&]<int Order>() __attribute__((always_inline)) { central_moments<Order>(raw, cx, cy, mu); });
 }
 
 }  // namespace facadeslam::semantics

@@ -13,10 +13,10 @@ namespace facadeslam::semantics {
 inline constexpr int kMaxMomentOrder = 5;
 
 struct PatchMoments {
-  int order = -1;  // highest p+q computed
+  int order = -1;                                            // highest p+q computed
   double mu[kMaxMomentOrder + 1][kMaxMomentOrder + 1] = {};  // central mu[p][q]; mu[0][0] = mass
-  double eta_scale[kMaxMomentOrder + 1] = {};  // 1 / mu00^(1 + k/2), 0 without mass
-  double mass_powers[15] = {};                 // mu00^k, k = 0..14 (affine invariants)
+  double eta_scale[kMaxMomentOrder + 1] = {};                // 1 / mu00^(1 + k/2), 0 without mass
+  double mass_powers[15] = {};                               // mu00^k, k = 0..14 (affine invariants)
 
   double mass() const { return mu[0][0]; }
   // Normalised central moment; 0 for a patch without mass.
@@ -46,7 +46,6 @@ void patch_moments_from_columns(const float* columns, int r, int order, PatchMom
 // Central moments mu[p][q] (p + q <= order, 0..5) from raw moments
 // raw[p][q] = sum of x^p y^q w about any origin, for weights w of the
 // caller's own (EDD's normalised intensity); raw[0][0] must be positive.
-void central_moments_from_raw(const double (*raw)[kMaxMomentOrder + 1], int order,
-                              double (*mu)[kMaxMomentOrder + 1]);
+void central_moments_from_raw(const double (*raw)[kMaxMomentOrder + 1], int order, double (*mu)[kMaxMomentOrder + 1]);
 
 }  // namespace facadeslam::semantics

@@ -88,8 +88,10 @@ void symmetric_3x3_eigenvalues(double* d, const double* e) {
 // eigenvalues. For the lanes the Laguerre iteration leaves unsettled.
 void largest_singular_values(double* d, double* e, int steps, int count, double* out) {
   const int found = std::min(count, steps);
-  if (steps == 3) symmetric_3x3_eigenvalues(d, e);
-  else tridiagonal_eigenvalues(d, e, steps);
+  if (steps == 3)
+    symmetric_3x3_eigenvalues(d, e);
+  else
+    tridiagonal_eigenvalues(d, e, steps);
   for (int k = 0; k < found; ++k) {  // selection of the largest few (m <= 9)
     int largest = k;
     for (int i = k + 1; i < steps; ++i)
@@ -254,8 +256,10 @@ struct LaneBidiagonalisation {
       for (int b = 0; b < kBlocks; ++b) {
         FloatLanes rows[kLanes];
         for (int l = 0; l < kLanes; ++l) {
-          if (l < lanes) load_lanes(rows[l], patches[l].row(i) + b * kLanes);  // PatchView::kReadSlack
-          else rows[l] = FloatLanes{};
+          if (l < lanes)
+            load_lanes(rows[l], patches[l].row(i) + b * kLanes);  // PatchView::kReadSlack
+          else
+            rows[l] = FloatLanes{};
         }
         transpose_lanes(rows);
         for (int k = 0; k < kLanes && b * kLanes + k < N; ++k) a[i][b * kLanes + k] = rows[k];

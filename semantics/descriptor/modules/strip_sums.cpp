@@ -17,7 +17,7 @@ namespace {
 // and the scalar tail alike), so a column's sums do not depend on the span.
 FACADESLAM_KERNEL void deviation_sums(const float* centre, std::ptrdiff_t stride, int r, int count, float* sum,
                                       float* squares) {
-  constexpr int kBlock = 4;  // vectors per block: 32 columns, two cache lines of each row
+  constexpr int kBlock = 4;           // vectors per block: 32 columns, two cache lines of each row
   constexpr int kPrefetchBlocks = 4;  // measured: 1 -> 4 took ~5 % off the thesis genome's extraction, 8 less
   int x = 0;
   for (; x + kBlock * kLanes <= count; x += kBlock * kLanes) {
@@ -210,15 +210,19 @@ void StripSums::compute(int row, const std::vector<int>& centres) {
   spans_.clear();
   for (const int x : centres) {
     const int first = x + image_->border - radius_, last = x + image_->border + radius_ + 1;
-    if (!spans_.empty() && first <= spans_.back().second) spans_.back().second = std::max(spans_.back().second, last);
-    else spans_.emplace_back(first, last);
+    if (!spans_.empty() && first <= spans_.back().second)
+      spans_.back().second = std::max(spans_.back().second, last);
+    else
+      spans_.emplace_back(first, last);
   }
   for (int p = 0; p < kPlaneCount; ++p) {
     const auto bit = static_cast<std::size_t>(p);
     const cv::Mat& plane = image_->planes[bit];
     for (const auto& [first, last] : spans_) {
-      if (statistics_.test(bit)) compute_statistics(plane, first, last, columns_[bit]);
-      else if (regions_.test(bit)) compute_regions(plane, first, last, columns_[bit]);
+      if (statistics_.test(bit))
+        compute_statistics(plane, first, last, columns_[bit]);
+      else if (regions_.test(bit))
+        compute_regions(plane, first, last, columns_[bit]);
     }
   }
   for (int c = 0; c < 3; ++c) {

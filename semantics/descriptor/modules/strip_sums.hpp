@@ -61,7 +61,7 @@ class StripSums {
     std::vector<float> sum, squares;           // statistics: deviations from the centre value
     std::vector<double> total, total_squares;  // statistics: sums of values and squares
     std::vector<float> top, bottom;            // regions (the centre row is read from the plane)
-    std::vector<float> moments;  // moments: sum of dy^q I, interleaved (kMomentColumnStride per column)
+    std::vector<float> moments;                // moments: sum of dy^q I, interleaved (kMomentColumnStride per column)
   };
   void compute_statistics(const cv::Mat& plane, int first, int last, Columns& c) const;
   void compute_regions(const cv::Mat& plane, int first, int last, Columns& c) const;

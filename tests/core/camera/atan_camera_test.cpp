@@ -101,8 +101,9 @@ TEST(AtanCamera, ProjectJacobianMatchesCentralDifferences) {
       const Eigen::Matrix<double, 2, 3> analytic = cam.project_jacobian(p);
       const Eigen::Matrix<double, 2, 3> numeric =
           test::numeric_jacobian([&](const Eigen::Vector3d& q) { return cam.project(q); }, p, 1e-6 * p.z());
-      EXPECT_LT((analytic - numeric).norm(), 1e-6 * analytic.norm())
-          << "w = " << w << " p = " << p.transpose() << "\n" << analytic << "\n" << numeric;
+      EXPECT_LT((analytic - numeric).norm(), 1e-6 * analytic.norm()) << "w = " << w << " p = " << p.transpose() << "\n"
+                                                                     << analytic << "\n"
+                                                                     << numeric;
     }
   }
 }

@@ -14,8 +14,8 @@
 namespace facadeslam {
 namespace {
 
-using ::testing::HasSubstr;
 using test::error_of;
+using ::testing::HasSubstr;
 
 Camera opencv_left() { return Camera(640, 480, test::opencv_left_model()); }
 Camera ptam_example() { return Camera(640, 480, test::ptam_example_model()); }

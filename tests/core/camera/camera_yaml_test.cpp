@@ -15,9 +15,9 @@
 namespace facadeslam {
 namespace {
 
+using test::error_of;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-using test::error_of;
 
 const char* const kValidPinhole =
     "model: pinhole\nwidth: 640\nheight: 480\nfx: 500\nfy: 500\ncx: 319.5\ncy: 239.5\n"
@@ -100,8 +100,7 @@ TEST(CameraYaml, ShippedFilesHaveTheDocumentedValues) {
 
 TEST(CameraYaml, OpenCvLeftMatchesTheSharedSample) {
   FACADESLAM_REQUIRE_SHARED_DATA("opencv-samples/left_intrinsics.yml");
-  cv::FileStorage fs((test::shared_data_dir() / "opencv-samples/left_intrinsics.yml").string(),
-                     cv::FileStorage::READ);
+  cv::FileStorage fs((test::shared_data_dir() / "opencv-samples/left_intrinsics.yml").string(), cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
   cv::Mat K, dist;
   fs["camera_matrix"] >> K;
@@ -142,7 +141,8 @@ TEST(CameraYaml, SaveThenLoadIsExact) {
                               .p1 = 0.0017831947042852964,
                               .p2 = -std::sqrt(2.0) * 1e-4,
                               .k3 = 0.05};
-  const AtanCamera atan_model{.fx = 4500.0 / 7.0, .fy = 451.1, .cx = 319.5 + 1e-13, .cy = -0.25, .w = std::numbers::pi / 4};
+  const AtanCamera atan_model{
+      .fx = 4500.0 / 7.0, .fy = 451.1, .cx = 319.5 + 1e-13, .cy = -0.25, .w = std::numbers::pi / 4};
   for (const Camera& original : {Camera(641, 479, pinhole), Camera(640, 480, atan_model)}) {
     const auto path = dir / "sub" / (original.model_name() + ".yaml");
     save_camera(path, original, "calibrated by a test\n\nsecond line");
@@ -208,8 +208,7 @@ TEST(CameraYamlErrors, MissingKey) {
               AllOf(HasSubstr("cam.yaml"), HasSubstr("'fy'"), HasSubstr("missing")));
   EXPECT_THAT(load_error(dir, with_line(kValidPinhole, "model", "")),
               AllOf(HasSubstr("cam.yaml"), HasSubstr("'model'"), HasSubstr("missing")));
-  const std::string atan_without_w =
-      "model: atan\nwidth: 640\nheight: 480\nfx: 450\nfy: 450\ncx: 319.5\ncy: 239.5\n";
+  const std::string atan_without_w = "model: atan\nwidth: 640\nheight: 480\nfx: 450\nfy: 450\ncx: 319.5\ncy: 239.5\n";
   EXPECT_THAT(load_error(dir, atan_without_w), AllOf(HasSubstr("cam.yaml"), HasSubstr("'w'"), HasSubstr("missing")));
 }
 
@@ -284,8 +283,7 @@ TEST(CameraYamlErrors, ModelThatCannotCoverTheImage) {
   EXPECT_THAT(load_error(dir, folding),
               AllOf(HasSubstr("cam.yaml"), HasSubstr("'distortion'"), HasSubstr("whole image")));
   // ATAN w so large that the corners lie beyond 90 degrees.
-  const std::string wide =
-      "model: atan\nwidth: 640\nheight: 480\nfx: 100\nfy: 100\ncx: 319.5\ncy: 239.5\nw: 2.9\n";
+  const std::string wide = "model: atan\nwidth: 640\nheight: 480\nfx: 100\nfy: 100\ncx: 319.5\ncy: 239.5\nw: 2.9\n";
   EXPECT_THAT(load_error(dir, wide), AllOf(HasSubstr("cam.yaml"), HasSubstr("'w'"), HasSubstr("corner")));
 }
 

@@ -113,7 +113,8 @@ TEST(PinholeRadTan, ProjectJacobianMatchesCentralDifferences) {
 
 TEST(PinholeRadTan, DistortJacobianMatchesCentralDifferences) {
   const PinholeRadTan cam = opencv_left_model();
-  for (const Eigen::Vector2d& xn : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.5, -0.4), Eigen::Vector2d(-0.7, 0.6)}) {
+  for (const Eigen::Vector2d& xn :
+       {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.5, -0.4), Eigen::Vector2d(-0.7, 0.6)}) {
     const double h = 1e-7;
     Eigen::Matrix2d numeric;
     for (int i = 0; i < 2; ++i) {

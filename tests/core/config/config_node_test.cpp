@@ -75,7 +75,8 @@ TEST(ConfigNode, ListsOfMappingsNameEachItemInMessages) {
   EXPECT_THAT(error_of([&] { cars[1].finish(); }), AllOf(HasSubstr("scene.yaml"), HasSubstr("'cars[1].colour'")));
   EXPECT_TRUE(c.get_mappings("none").empty());
   EXPECT_TRUE(c.get_mappings("absent").empty());
-  EXPECT_THAT(error_of([&] { c.get_mappings("scalar"); }), AllOf(HasSubstr("'scalar'"), HasSubstr("a list of mappings")));
+  EXPECT_THAT(error_of([&] { c.get_mappings("scalar"); }),
+              AllOf(HasSubstr("'scalar'"), HasSubstr("a list of mappings")));
   EXPECT_THAT(error_of([&] { c.get_mappings("mixed"); }), AllOf(HasSubstr("'mixed[1]'"), HasSubstr("a mapping")));
   EXPECT_NO_THROW(c.finish());  // every key above was read
 }
@@ -114,7 +115,9 @@ TEST(ConfigNode, OutOfRangeValue) {
   EXPECT_THAT(error_of([&] { c.get_double("fx", Range::positive()); }),
               AllOf(HasSubstr("cam.yaml"), HasSubstr("'fx'"), HasSubstr("> 0"), HasSubstr("'-3'")));
   EXPECT_THAT(error_of([&] { c.get_int("levels", Range::closed(1, 4)); }), HasSubstr("[1, 4]"));
-  EXPECT_THAT(error_of([&] { c.get_choice("model", {"pinhole", "atan"}); }),
+  EXPECT_THAT(error_of([&] {
+                c.get_choice("model", {"pinhole", "atan"});
+              }),
               AllOf(HasSubstr("'pinhole', 'atan'"), HasSubstr("'fisheye'")));
   EXPECT_THAT(error_of([&] { c.get_doubles("d", 5); }), HasSubstr("a list of 5 numbers"));
 }

@@ -90,7 +90,7 @@ TEST(FastDetector, BorderDropsCornersNearTheEdge) {
 // / 4096 to break ties; a corner is a candidate whose score beats its earlier
 // raster neighbours and is not beaten by its later ones.
 float reference_score(const cv::Mat& img, int x, int y) {
-  static constexpr int kCircle[16][2] = {{0, -3}, {1, -3}, {2, -2}, {3, -1}, {3, 0},  {3, 1},  {2, 2},  {1, 3},
+  static constexpr int kCircle[16][2] = {{0, -3}, {1, -3}, {2, -2}, {3, -1}, {3, 0},  {3, 1},   {2, 2},   {1, 3},
                                          {0, 3},  {-1, 3}, {-2, 2}, {-3, 1}, {-3, 0}, {-3, -1}, {-2, -2}, {-1, -3}};
   int d[16];
   unsigned sad = 0;

@@ -20,9 +20,7 @@ TEST(HalfSample, OddSizesDropTheLastRowAndColumn) {
   EXPECT_EQ(half_sample(img).size(), cv::Size(4, 3));
 }
 
-TEST(HalfSample, RejectsColourImages) {
-  EXPECT_THROW(half_sample(cv::Mat(8, 8, CV_8UC3)), Error);
-}
+TEST(HalfSample, RejectsColourImages) { EXPECT_THROW(half_sample(cv::Mat(8, 8, CV_8UC3)), Error); }
 
 }  // namespace
 }  // namespace facadeslam

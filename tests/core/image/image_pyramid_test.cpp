@@ -40,8 +40,7 @@ TEST(ImagePyramid, CoordinateConventionMatchesHalfSampling) {
   const Eigen::Vector2d centre3 = ImagePyramid::level0_to_level(centre0, 3);
   EXPECT_DOUBLE_EQ(centre3.x(), x0 / 8);
   EXPECT_DOUBLE_EQ(centre3.y(), y0 / 8);
-  EXPECT_EQ(pyramid.level(3).image.at<std::uint8_t>(static_cast<int>(centre3.y()), static_cast<int>(centre3.x())),
-            255);
+  EXPECT_EQ(pyramid.level(3).image.at<std::uint8_t>(static_cast<int>(centre3.y()), static_cast<int>(centre3.x())), 255);
   const Eigen::Vector2d back = ImagePyramid::level_to_level0(centre3, 3);
   EXPECT_NEAR((back - centre0).norm(), 0.0, 1e-12);
 }

@@ -44,9 +44,7 @@ Ld ref_d(Ld t) {  // (1 - (theta/2) cot(theta/2)) / theta^2
   return (1 - half * std::cos(half) / std::sin(half)) / t;
 }
 
-Ld ref_sin_half_over_theta(Ld t) {
-  return t == 0 ? 0.5L : std::sin(std::sqrt(t) / 2) / std::sqrt(t);
-}
+Ld ref_sin_half_over_theta(Ld t) { return t == 0 ? 0.5L : std::sin(std::sqrt(t) / 2) / std::sqrt(t); }
 
 std::vector<double> theta_values() {
   std::vector<double> out;
@@ -56,8 +54,7 @@ std::vector<double> theta_values() {
 }
 
 void expect_relative(double actual, Ld expected, double tol, const char* what, double theta) {
-  EXPECT_LE(std::abs(static_cast<Ld>(actual) - expected), tol * std::abs(expected))
-      << what << " at theta " << theta;
+  EXPECT_LE(std::abs(static_cast<Ld>(actual) - expected), tol * std::abs(expected)) << what << " at theta " << theta;
 }
 
 TEST(LieCoefficients, MatchLongDoubleReferences) {
@@ -69,8 +66,7 @@ TEST(LieCoefficients, MatchLongDoubleReferences) {
     expect_relative(lie_detail::inverse_jacobian_coefficient(t), ref_d(tl), 1e-15, "D", th);
     const auto h = lie_detail::half_angle(t);
     expect_relative(h.cos_half, std::cos(std::sqrt(tl) / 2), 4e-16, "cos(theta/2)", th);
-    expect_relative(h.sin_half_over_theta, ref_sin_half_over_theta(tl), 4e-16, "sin(theta/2)/theta",
-                    th);
+    expect_relative(h.sin_half_over_theta, ref_sin_half_over_theta(tl), 4e-16, "sin(theta/2)/theta", th);
   }
 }
 
@@ -92,9 +88,8 @@ TEST(LieCoefficients, QuaternionLogFactorMatchesAtan2) {
 // value_tol is relative: a few ulps of round-off in either branch (the closed
 // forms at theta = 1 still subtract numbers ~6x larger than their result),
 // far below what a wrong series term would cause (> 1e-8 at theta = 1).
-void expect_smooth_switch(
-    const std::function<ceres::Jet<double, 1>(const ceres::Jet<double, 1>&)>& f, double at,
-    const char* name, double value_tol = 1e-14) {
+void expect_smooth_switch(const std::function<ceres::Jet<double, 1>(const ceres::Jet<double, 1>&)>& f, double at,
+                          const char* name, double value_tol = 1e-14) {
   using Jet = ceres::Jet<double, 1>;
   // One ulp apart: `at` itself takes the closed form, its neighbour towards 0 the series.
   const Jet below = f(Jet(std::nextafter(at, 0.0), 0));
@@ -106,45 +101,34 @@ void expect_smooth_switch(
 TEST(LieCoefficients, SeriesAndClosedFormsJoinSmoothlyForJets) {
   using Jet = ceres::Jet<double, 1>;
   const double t = lie_detail::kSeriesAngleSq;
-  expect_smooth_switch([](const Jet& x) { return lie_detail::one_minus_cos_over_theta_sq(x); }, t,
-                       "B");
-  expect_smooth_switch([](const Jet& x) { return lie_detail::theta_minus_sin_over_theta_cubed(x); },
-                       t, "C");
-  expect_smooth_switch([](const Jet& x) { return lie_detail::inverse_jacobian_coefficient(x); }, t,
-                       "D");
+  expect_smooth_switch([](const Jet& x) { return lie_detail::one_minus_cos_over_theta_sq(x); }, t, "B");
+  expect_smooth_switch([](const Jet& x) { return lie_detail::theta_minus_sin_over_theta_cubed(x); }, t, "C");
+  expect_smooth_switch([](const Jet& x) { return lie_detail::inverse_jacobian_coefficient(x); }, t, "D");
   expect_smooth_switch([](const Jet& x) { return lie_detail::half_angle(x).cos_half; }, t, "cos");
-  expect_smooth_switch([](const Jet& x) { return lie_detail::half_angle(x).sin_half_over_theta; },
-                       t, "sin");
+  expect_smooth_switch([](const Jet& x) { return lie_detail::half_angle(x).sin_half_over_theta; }, t, "sin");
   for (const double sigma : {-3.0, -0.4, 0.0, 1e-7, 0.4, 3.0}) {
     // For sigma << -1 the closed forms lose ~eps sigma^2 / theta^2 (see sim3_w_coefficients).
     const double tol = 1e-14 * std::max(1.0, sigma * sigma);
-    expect_smooth_switch(
-        [sigma](const Jet& x) { return lie_detail::sim3_w_coefficients(Jet(sigma), x).b; }, t,
-        "sim3 b", tol);
-    expect_smooth_switch(
-        [sigma](const Jet& x) { return lie_detail::sim3_w_coefficients(Jet(sigma), x).c; }, t,
-        "sim3 c", tol);
+    expect_smooth_switch([sigma](const Jet& x) { return lie_detail::sim3_w_coefficients(Jet(sigma), x).b; }, t,
+                         "sim3 b", tol);
+    expect_smooth_switch([sigma](const Jet& x) { return lie_detail::sim3_w_coefficients(Jet(sigma), x).c; }, t,
+                         "sim3 c", tol);
   }
   // The quaternion log factor switches at n^2 = sin^2(theta/2) = kSeriesLogSq (w^2 = 1 - n^2).
   expect_smooth_switch(
       [](const Jet& n_sq) {
-        return lie_detail::quaternion_log_factor(n_sq,
-                                                 Jet(std::sqrt(1 - lie_detail::kSeriesLogSq)));
+        return lie_detail::quaternion_log_factor(n_sq, Jet(std::sqrt(1 - lie_detail::kSeriesLogSq)));
       },
       lie_detail::kSeriesLogSq, "log factor");
   // The Sim3 moments switch from power series to recurrence at |sigma| = 1.
   for (const double edge : {-lie_detail::kSmallSigma, lie_detail::kSmallSigma}) {
     for (const double theta_sq : {0.0, 0.3, 0.99}) {
       expect_smooth_switch(
-          [theta_sq](const Jet& sigma) {
-            return lie_detail::sim3_w_coefficients(sigma, Jet(theta_sq)).b;
-          },
-          edge, "sim3 b (sigma)");
+          [theta_sq](const Jet& sigma) { return lie_detail::sim3_w_coefficients(sigma, Jet(theta_sq)).b; }, edge,
+          "sim3 b (sigma)");
       expect_smooth_switch(
-          [theta_sq](const Jet& sigma) {
-            return lie_detail::sim3_w_coefficients(sigma, Jet(theta_sq)).c;
-          },
-          edge, "sim3 c (sigma)");
+          [theta_sq](const Jet& sigma) { return lie_detail::sim3_w_coefficients(sigma, Jet(theta_sq)).c; }, edge,
+          "sim3 c (sigma)");
     }
   }
 }
@@ -175,13 +159,11 @@ TEST(LieCoefficients, ExpMomentsMatchQuadrature) {
     const auto m = lie_detail::exp_moments(sigma);
     for (int k = 0; k < kK; ++k) {
       // What the Sim3 series needs: M_k enters with weight theta^(k-1)/k! <= 1/k!.
-      EXPECT_LE(std::abs(m[k] - expected[k]) * lie_detail::inverse_factorial(k),
-                1e-15 * expected[0])
+      EXPECT_LE(std::abs(m[k] - expected[k]) * lie_detail::inverse_factorial(k), 1e-15 * expected[0])
           << "sigma " << sigma << " k " << k;
       // And in the power-series range every moment is accurate by itself.
       if (std::abs(sigma) < lie_detail::kSmallSigma && k <= 8) {
-        EXPECT_LE(std::abs(m[k] - expected[k]), 1e-14 * expected[k])
-            << "sigma " << sigma << " k " << k;
+        EXPECT_LE(std::abs(m[k] - expected[k]), 1e-14 * expected[k]) << "sigma " << sigma << " k " << k;
       }
     }
   }

@@ -17,18 +17,15 @@ inline constexpr double kPi = std::numbers::pi;
 // Angles near 0, around the series switches (theta = 1, and theta = 0.6435
 // where sin^2(theta/2) = 0.1 for the quaternion log), generic, and near pi.
 inline std::vector<double> stress_angles() {
-  return {
-      0.0,   1e-12, 1e-9, 1e-6,  1e-4, 1e-2, 0.1,        0.5,        0.643,      0.6435011087932844,
-      0.644, 0.999, 1.0,  1.001, 2.0,  3.0,  kPi - 1e-3, kPi - 1e-6, kPi - 1e-9, kPi};
+  return {0.0,   1e-12, 1e-9, 1e-6,  1e-4, 1e-2, 0.1,        0.5,        0.643,      0.6435011087932844,
+          0.644, 0.999, 1.0,  1.001, 2.0,  3.0,  kPi - 1e-3, kPi - 1e-6, kPi - 1e-9, kPi};
 }
 
 class Random {
  public:
   explicit Random(unsigned seed = 12345) : engine_(seed) {}
 
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(engine_);
-  }
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
 
   // Vectors are drawn one entry a statement, in index order: as the
   // arguments of one call they would be drawn in the compiler's order (GCC
@@ -49,9 +46,7 @@ class Random {
   }
 
   // A uniformly random rotation vector with |omega| < max_angle.
-  Eigen::Vector3d rotation_vector(double max_angle = kPi) {
-    return unit_vector() * uniform(0.0, max_angle);
-  }
+  Eigen::Vector3d rotation_vector(double max_angle = kPi) { return unit_vector() * uniform(0.0, max_angle); }
 
   // A uniformly distributed unit quaternion (either sign), as coefficients [x y z w].
   Eigen::Vector4d quaternion_coeffs() {
@@ -95,13 +90,10 @@ double max_abs_diff(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b
 
 // Entry-wise |a - b| <= tol, with both matrices in the failure message.
 template <class A, class B>
-::testing::AssertionResult matrix_near(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b,
-                                       double tol) {
+::testing::AssertionResult matrix_near(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b, double tol) {
   const double diff = max_abs_diff(a, b);
   if (diff <= tol) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "max |a - b| = " << diff << " > " << tol << "\na:\n"
-                                       << a << "\nb:\n"
-                                       << b;
+  return ::testing::AssertionFailure() << "max |a - b| = " << diff << " > " << tol << "\na:\n" << a << "\nb:\n" << b;
 }
 
 }  // namespace facadeslam::test

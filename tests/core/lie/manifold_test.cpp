@@ -63,15 +63,13 @@ Vector minus(const ceres::Manifold& m, const Vector& y, const Vector& x) {
 }
 
 Matrix plus_jacobian(const ceres::Manifold& m, const Vector& x) {
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> j(m.AmbientSize(),
-                                                                           m.TangentSize());
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> j(m.AmbientSize(), m.TangentSize());
   EXPECT_TRUE(m.PlusJacobian(x.data(), j.data()));
   return j;
 }
 
 Matrix minus_jacobian(const ceres::Manifold& m, const Vector& x) {
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> j(m.TangentSize(),
-                                                                           m.AmbientSize());
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> j(m.TangentSize(), m.AmbientSize());
   EXPECT_TRUE(m.MinusJacobian(x.data(), j.data()));
   return j;
 }
@@ -164,8 +162,7 @@ TEST(SE3Manifold, MinusIgnoresTheQuaternionSigns) {
 struct SE3PlusFunctor {
   template <class T>
   bool Plus(const T* x, const T* delta, T* x_plus_delta) const {
-    se3_to_params(SE3<T>::exp(Eigen::Map<const Eigen::Matrix<T, 6, 1>>(delta)) * se3_from_params(x),
-                  x_plus_delta);
+    se3_to_params(SE3<T>::exp(Eigen::Map<const Eigen::Matrix<T, 6, 1>>(delta)) * se3_from_params(x), x_plus_delta);
     return true;
   }
   template <class T>

@@ -30,8 +30,7 @@ std::vector<Vector6d> stress_tangents(Random& rng, int random_count, bool below_
     if (below_pi && angle >= kPi) continue;
     for (int k = 0; k < 4; ++k) out.push_back(tangent(rng.vector3(5.0), rng.unit_vector() * angle));
   }
-  for (int i = 0; i < random_count; ++i)
-    out.push_back(tangent(rng.vector3(5.0), rng.rotation_vector(kPi)));
+  for (int i = 0; i < random_count; ++i) out.push_back(tangent(rng.vector3(5.0), rng.rotation_vector(kPi)));
   return out;
 }
 
@@ -132,11 +131,9 @@ TEST(SE3, AdjointIdentities) {
     const SE3d b = SE3d::exp(tangent(rng.vector3(3.0), rng.rotation_vector()));
     const Vector6d xi = tangent(rng.vector3(1.0), rng.rotation_vector(1.0));
     // T exp(xi) T^-1 == exp(Ad(T) xi)
-    EXPECT_MATRIX_NEAR((a * SE3d::exp(xi) * a.inverse()).matrix(),
-                       SE3d::exp(a.adjoint() * xi).matrix(), 1e-12);
+    EXPECT_MATRIX_NEAR((a * SE3d::exp(xi) * a.inverse()).matrix(), SE3d::exp(a.adjoint() * xi).matrix(), 1e-12);
     // Ad(T) xi == vee(T hat(xi) T^-1)
-    EXPECT_MATRIX_NEAR(a.adjoint() * xi,
-                       SE3d::vee(a.matrix() * SE3d::hat(xi) * a.inverse().matrix()), 1e-12);
+    EXPECT_MATRIX_NEAR(a.adjoint() * xi, SE3d::vee(a.matrix() * SE3d::hat(xi) * a.inverse().matrix()), 1e-12);
     // Ad(A B) == Ad(A) Ad(B), Ad(T^-1) == Ad(T)^-1
     EXPECT_MATRIX_NEAR((a * b).adjoint(), a.adjoint() * b.adjoint(), 1e-12);
     EXPECT_MATRIX_NEAR(a.inverse().adjoint() * a.adjoint(), Matrix6d::Identity(), 1e-13);

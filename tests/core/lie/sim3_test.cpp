@@ -55,8 +55,7 @@ TEST(Sim3, ExpMatchesTheMatrixExponentialOfHat) {
   for (const Vector7d& xi : stress_tangents(rng, false)) {
     const Matrix4d expected = test::expm_reference<4>(Sim3d::hat(xi));
     const double scale = std::max(1.0, expected.cwiseAbs().maxCoeff());
-    EXPECT_LE(test::max_abs_diff(Sim3d::exp(xi).matrix(), expected), 1e-13 * scale)
-        << "xi " << xi.transpose();
+    EXPECT_LE(test::max_abs_diff(Sim3d::exp(xi).matrix(), expected), 1e-13 * scale) << "xi " << xi.transpose();
   }
 }
 
@@ -67,8 +66,7 @@ TEST(Sim3, ZeroSigmaIsSE3) {
     const Vector3d omega = rng.unit_vector() * angle;
     Eigen::Matrix<double, 6, 1> xi6;
     xi6 << rho, omega;
-    EXPECT_MATRIX_NEAR(Sim3d::exp(tangent(rho, omega, 0.0)).matrix(), SE3d::exp(xi6).matrix(),
-                       1e-14);
+    EXPECT_MATRIX_NEAR(Sim3d::exp(tangent(rho, omega, 0.0)).matrix(), SE3d::exp(xi6).matrix(), 1e-14);
     EXPECT_MATRIX_NEAR(Sim3d::w_matrix(omega, 0.0), SO3d::left_jacobian(omega), 1e-15);
   }
 }
@@ -99,8 +97,7 @@ TEST(Sim3, ExpOfLogIsIdentity) {
   for (const Vector7d& xi : stress_tangents(rng, false)) {
     const Sim3d s = Sim3d::exp(xi);
     const double scale = std::max(1.0, s.matrix().cwiseAbs().maxCoeff());
-    EXPECT_LE(test::max_abs_diff(Sim3d::exp(s.log()).matrix(), s.matrix()), 1e-12 * scale)
-        << "xi " << xi.transpose();
+    EXPECT_LE(test::max_abs_diff(Sim3d::exp(s.log()).matrix(), s.matrix()), 1e-12 * scale) << "xi " << xi.transpose();
   }
 }
 
@@ -166,8 +163,7 @@ TEST(Sim3, HatAndVee) {
   Random rng(49);
   const Vector7d xi = tangent(rng.vector3(2.0), rng.vector3(2.0), 0.7);
   const Matrix4d h = Sim3d::hat(xi);
-  EXPECT_MATRIX_NEAR((h.topLeftCorner<3, 3>()),
-                     SO3d::hat(xi.segment<3>(3)) + 0.7 * Matrix3d::Identity(), 0.0);
+  EXPECT_MATRIX_NEAR((h.topLeftCorner<3, 3>()), SO3d::hat(xi.segment<3>(3)) + 0.7 * Matrix3d::Identity(), 0.0);
   EXPECT_MATRIX_NEAR((h.topRightCorner<3, 1>()), xi.head<3>(), 0.0);
   EXPECT_MATRIX_NEAR(Sim3d::vee(h), xi, 1e-15);
 }
@@ -182,8 +178,7 @@ TEST(Sim3, AdjointIdentities) {
     const Sim3d rhs = Sim3d::exp(a.adjoint() * xi);
     const double tol = 1e-12 * std::max(1.0, lhs.matrix().cwiseAbs().maxCoeff());
     EXPECT_MATRIX_NEAR(lhs.matrix(), rhs.matrix(), tol);
-    EXPECT_MATRIX_NEAR(a.adjoint() * xi,
-                       Sim3d::vee(a.matrix() * Sim3d::hat(xi) * a.inverse().matrix()), 1e-11);
+    EXPECT_MATRIX_NEAR(a.adjoint() * xi, Sim3d::vee(a.matrix() * Sim3d::hat(xi) * a.inverse().matrix()), 1e-11);
     const Matrix7d ad_ab = (a * b).adjoint();
     EXPECT_MATRIX_NEAR(ad_ab, a.adjoint() * b.adjoint(), 1e-12 * std::max(1.0, ad_ab.norm()));
     EXPECT_MATRIX_NEAR(a.inverse().adjoint() * a.adjoint(), Matrix7d::Identity(), 1e-12);

@@ -28,8 +28,7 @@ std::vector<SO3d> stress_rotations(Random& rng, int random_count) {
   std::vector<SO3d> out;
   for (const double angle : stress_angles())
     for (int k = 0; k < 4; ++k) out.push_back(SO3d::exp(rng.unit_vector() * angle));
-  for (int i = 0; i < random_count; ++i)
-    out.push_back(SO3d(Eigen::Quaterniond(rng.quaternion_coeffs())));
+  for (int i = 0; i < random_count; ++i) out.push_back(SO3d(Eigen::Quaterniond(rng.quaternion_coeffs())));
   return out;
 }
 
@@ -150,8 +149,7 @@ TEST(SO3, AdjointIsTheRotationMatrix) {
   for (int k = 0; k < 100; ++k) {
     const SO3d r = SO3d::exp(rng.rotation_vector());
     const Vector3d omega = rng.rotation_vector(1.0);
-    EXPECT_MATRIX_NEAR((r * SO3d::exp(omega) * r.inverse()).matrix(),
-                       SO3d::exp(r.adjoint() * omega).matrix(), 1e-14);
+    EXPECT_MATRIX_NEAR((r * SO3d::exp(omega) * r.inverse()).matrix(), SO3d::exp(r.adjoint() * omega).matrix(), 1e-14);
     EXPECT_MATRIX_NEAR(r.adjoint(), r.matrix(), 0.0);
   }
 }
@@ -215,9 +213,7 @@ TEST(SO3, MatrixConstructorCarriesJetDerivativesAlongRotations) {
   }
 }
 
-TEST(SO3, RejectsZeroQuaternion) {
-  EXPECT_THROW(SO3d(Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0)), std::invalid_argument);
-}
+TEST(SO3, RejectsZeroQuaternion) { EXPECT_THROW(SO3d(Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0)), std::invalid_argument); }
 
 TEST(SO3, RejectsNonFiniteQuaternion) {
   EXPECT_THROW(SO3d(Eigen::Quaterniond(NAN, 0.0, 0.0, 1.0)), std::invalid_argument);
@@ -298,8 +294,7 @@ TEST(SO3, JacobianIdentitiesAndInverses) {
       Eigen::Matrix<double, 6, 6> block = Eigen::Matrix<double, 6, 6>::Zero();
       block.topLeftCorner<3, 3>() = SO3d::hat(omega);
       block.topRightCorner<3, 3>() = Matrix3d::Identity();
-      EXPECT_MATRIX_NEAR(jl, Matrix3d(test::expm_reference<6>(block).topRightCorner<3, 3>()),
-                         1e-14);
+      EXPECT_MATRIX_NEAR(jl, Matrix3d(test::expm_reference<6>(block).topRightCorner<3, 3>()), 1e-14);
     }
   }
 }

@@ -25,9 +25,7 @@ std::string read_file(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void write_file(const std::filesystem::path& p, const std::string& data) {
-  std::ofstream(p, std::ios::binary) << data;
-}
+void write_file(const std::filesystem::path& p, const std::string& data) { std::ofstream(p, std::ios::binary) << data; }
 
 bool mats_equal(const cv::Mat& a, const cv::Mat& b) {
   if (a.type() != b.type() || a.size() != b.size()) return false;
@@ -148,8 +146,7 @@ constexpr std::size_t kPointRecord = kPointHead + kVotes + kRegionViews + 1;
 
 // Rewrites a version 4 file as version 3 (no region views) or 2 (label and
 // confidence instead of the votes) did.
-std::string as_older_version(const std::string& v4, const std::vector<std::shared_ptr<MapPoint>>& points,
-                             int version) {
+std::string as_older_version(const std::string& v4, const std::vector<std::shared_ptr<MapPoint>>& points, int version) {
   const std::size_t body = v4.size() - 8, first = body - points.size() * kPointRecord;
   std::string old = v4.substr(0, first);
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -270,9 +267,7 @@ TEST_F(MapIo, MapFromAnotherCameraIsRejected) {
   EXPECT_THAT(error_of([&] { load_map(file, loaded, &bigger); }), HasSubstr("320x240"));
 }
 
-TEST_F(MapIo, LoadingIntoANonEmptyMapIsRefused) {
-  EXPECT_THROW(load_map(file, map), Error);
-}
+TEST_F(MapIo, LoadingIntoANonEmptyMapIsRefused) { EXPECT_THROW(load_map(file, map), Error); }
 
 }  // namespace
 }  // namespace facadeslam

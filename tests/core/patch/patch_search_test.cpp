@@ -43,8 +43,8 @@ cv::Mat smooth_image(Eigen::Vector2d shift) {
   std::vector<Blob> blobs;
   cv::RNG rng(4);
   for (int i = 0; i < 400; ++i)
-    blobs.push_back({rng.uniform(0.0, 160.0), rng.uniform(0.0, 120.0), rng.uniform(-80.0, 120.0),
-                     0.7 * rng.uniform(1.5, 3.0)});
+    blobs.push_back(
+        {rng.uniform(0.0, 160.0), rng.uniform(0.0, 120.0), rng.uniform(-80.0, 120.0), 0.7 * rng.uniform(1.5, 3.0)});
   cv::Mat image(120, 160, CV_8UC1);
   for (int y = 0; y < image.rows; ++y)
     for (int x = 0; x < image.cols; ++x) {
@@ -313,9 +313,11 @@ TEST_P(RenderedSearch, FindsTheTrueProjectionToSubpixelAccuracy) {
   std::sort(errors_level.begin(), errors_level.end());
   const double median = errors_level0[errors_level0.size() / 2];
   const double worst_level = errors_level.back();
-  std::printf("[ source level %d, distance %.1f, roll %.0f -> search level %d ] found %d / %d, level-0 error median "
-              "%.3f max %.3f px (max %.3f search-level px); truth outside radius: %d false accepts\n",
-              c.source_level, c.distance, c.roll_deg, level, found, tried, median, errors_level0.back(), worst_level, false_accepts);
+  std::printf(
+      "[ source level %d, distance %.1f, roll %.0f -> search level %d ] found %d / %d, level-0 error median "
+      "%.3f max %.3f px (max %.3f search-level px); truth outside radius: %d false accepts\n",
+      c.source_level, c.distance, c.roll_deg, level, found, tried, median, errors_level0.back(), worst_level,
+      false_accepts);
   EXPECT_EQ(same_with_index, tried);
   EXPECT_GE(found, tried * 8 / 10);
   EXPECT_EQ(outside_found, 0);

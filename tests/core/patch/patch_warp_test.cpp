@@ -28,9 +28,7 @@ std::shared_ptr<const ImagePyramid> noise_pyramid(int seed = 3) {
   return std::make_shared<const ImagePyramid>(image, options);
 }
 
-float pixel(const ImagePyramid& p, int level, int x, int y) {
-  return p.level(level).image.at<std::uint8_t>(y, x);
-}
+float pixel(const ImagePyramid& p, int level, int x, int y) { return p.level(level).image.at<std::uint8_t>(y, x); }
 
 TEST(ChooseSearchLevel, RoundsLog4OfTheDeterminantAndClampsToTheRange) {
   // Level switches at det = 2 * 4^l (round(log4 det)).
@@ -252,10 +250,11 @@ TEST_P(RenderedWarp, TemplateMatchesTheCurrentViewAtTheTrueProjection) {
   ASSERT_GE(used, 15) << "too few points visible in the current view";
   std::sort(per_pixel.begin(), per_pixel.end());
   const double median = per_pixel[per_pixel.size() / 2], p90 = per_pixel[per_pixel.size() * 9 / 10];
-  std::printf("[ level %d -> %d, distance %.1f, roll %.0f, tilt %.0f ] %d points (%d textureless), warp error %.1e, "
-              "ZMSSD/px median %.1f p90 %.1f, discriminative %d, control worse %d\n",
-              c.source_level, c.expected_level, c.distance, c.roll_deg, c.tilt_deg, used, textureless,
-              worst_warp_error, median, p90, discriminative, control_worse);
+  std::printf(
+      "[ level %d -> %d, distance %.1f, roll %.0f, tilt %.0f ] %d points (%d textureless), warp error %.1e, "
+      "ZMSSD/px median %.1f p90 %.1f, discriminative %d, control worse %d\n",
+      c.source_level, c.expected_level, c.distance, c.roll_deg, c.tilt_deg, used, textureless, worst_warp_error, median,
+      p90, discriminative, control_worse);
   EXPECT_LE(textureless, (used + textureless) / 10);
   EXPECT_LT(worst_warp_error, 2e-3);
   if (c.tilt_deg == 0.0) {
@@ -272,13 +271,14 @@ TEST_P(RenderedWarp, TemplateMatchesTheCurrentViewAtTheTrueProjection) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    DepthScaleRollAndTilt, RenderedWarp,
-    ::testing::Values(WarpCase{1, 2.0, 0, 0, 1}, WarpCase{1, 1.0, 0, 0, 2}, WarpCase{1, 4.0, 0, 0, 0},
-                      WarpCase{1, 2.0, 30, 0, 1}, WarpCase{1, 1.0, 30, 0, 2}, WarpCase{1, 4.0, 30, 0, 0},
-                      WarpCase{1, 1.6, 15, 0, 1}, WarpCase{0, 2.0, 30, 0, 0}, WarpCase{0, 1.0, 20, 0, 1},
-                      WarpCase{2, 2.0, 30, 0, 2}, WarpCase{2, 1.0, 30, 0, 3}, WarpCase{2, 4.0, 30, 0, 1},
-                      WarpCase{1, 2.0, 20, 25, 1}, WarpCase{0, 1.0, 30, 20, 1}));
+INSTANTIATE_TEST_SUITE_P(DepthScaleRollAndTilt, RenderedWarp,
+                         ::testing::Values(WarpCase{1, 2.0, 0, 0, 1}, WarpCase{1, 1.0, 0, 0, 2},
+                                           WarpCase{1, 4.0, 0, 0, 0}, WarpCase{1, 2.0, 30, 0, 1},
+                                           WarpCase{1, 1.0, 30, 0, 2}, WarpCase{1, 4.0, 30, 0, 0},
+                                           WarpCase{1, 1.6, 15, 0, 1}, WarpCase{0, 2.0, 30, 0, 0},
+                                           WarpCase{0, 1.0, 20, 0, 1}, WarpCase{2, 2.0, 30, 0, 2},
+                                           WarpCase{2, 1.0, 30, 0, 3}, WarpCase{2, 4.0, 30, 0, 1},
+                                           WarpCase{1, 2.0, 20, 25, 1}, WarpCase{0, 1.0, 30, 20, 1}));
 
 }  // namespace
 }  // namespace facadeslam::patch

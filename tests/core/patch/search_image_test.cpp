@@ -43,7 +43,8 @@ TEST(SearchImage, RowsHoldExactlyTheCornersOfThatRow) {
 
 TEST(SearchImage, RejectsCornersThatAreNotSorted) {
   std::array<PyramidLevel, kPyramidLevels> levels;
-  for (int l = 0; l < kPyramidLevels; ++l) levels[static_cast<std::size_t>(l)].image = cv::Mat(64 >> l, 64 >> l, CV_8UC1);
+  for (int l = 0; l < kPyramidLevels; ++l)
+    levels[static_cast<std::size_t>(l)].image = cv::Mat(64 >> l, 64 >> l, CV_8UC1);
   levels[0].corners = {{10, 20, 1.f}, {5, 12, 1.f}};  // row 20 before row 12
   const ImagePyramid unsorted(levels);
   EXPECT_THROW(SearchImage{unsorted}, Error);

@@ -214,9 +214,7 @@ TEST(LinePlot, MismatchedSeriesIsAnError) {
   EXPECT_THROW(plot.add_series("bad", std::vector<double>{1.0, 2.0}, std::vector<double>{1.0}), Error);
 }
 
-TEST(LinePlot, TooSmallIsAnError) {
-  EXPECT_THROW(LinePlot(100, 100), Error);
-}
+TEST(LinePlot, TooSmallIsAnError) { EXPECT_THROW(LinePlot(100, 100), Error); }
 
 }  // namespace
 }  // namespace facadeslam::plot

@@ -46,9 +46,7 @@ TEST(NiceTicks, EndsThatAreTicksAddNoExtraTick) {
   EXPECT_NEAR(t.hi, 0.6, 1e-12);
 }
 
-TEST(NiceTicks, ReversedRangeIsTheSame) {
-  EXPECT_EQ(nice_ticks(10.0, 2.0).values, nice_ticks(2.0, 10.0).values);
-}
+TEST(NiceTicks, ReversedRangeIsTheSame) { EXPECT_EQ(nice_ticks(10.0, 2.0).values, nice_ticks(2.0, 10.0).values); }
 
 TEST(NiceTicks, ConstantValueGetsARangeAroundIt) {
   const auto t = nice_ticks(5.0, 5.0);

@@ -75,8 +75,8 @@ TEST(KittiRelativeError, ConstantYawDriftIsItsDegreesPer100m) {
   const auto gt = straight_road(5000);  // 499.9 m: 100 ... 400 m segments
   auto est = gt;
   for (std::size_t i = 0; i < est.size(); ++i)
-    est[i].linear() = Eigen::AngleAxisd(deg_to_rad(drift_deg * static_cast<double>(i)), Eigen::Vector3d::UnitY())
-                          .toRotationMatrix();
+    est[i].linear() =
+        Eigen::AngleAxisd(deg_to_rad(drift_deg * static_cast<double>(i)), Eigen::Vector3d::UnitY()).toRotationMatrix();
 
   const KittiRelativeError e = kitti_relative_error(gt, est);
   ASSERT_EQ(e.per_length.size(), 4u);

@@ -84,7 +84,8 @@ TEST(EvaluateTrajectory, RpeOfAConstantPerStepError) {
   const auto gt = test::helix(60);
   Eigen::Isometry3d D = Eigen::Isometry3d::Identity();
   D.translation() = Eigen::Vector3d(0.006, -0.008, 0.0);  // 1 cm
-  D.linear() = Eigen::AngleAxisd(0.5 * std::numbers::pi / 180.0, Eigen::Vector3d(1, 2, 2).normalized()).toRotationMatrix();
+  D.linear() =
+      Eigen::AngleAxisd(0.5 * std::numbers::pi / 180.0, Eigen::Vector3d(1, 2, 2).normalized()).toRotationMatrix();
   Trajectory est = gt;
   for (std::size_t i = 1; i < gt.size(); ++i)
     est[i].T_w_c = est[i - 1].T_w_c * (gt[i - 1].T_w_c.inverse() * gt[i].T_w_c) * D;
@@ -183,8 +184,8 @@ TEST(EvaluateTrajectory, JsonHasTheFieldNamesAsKeys) {
   const auto gt = test::helix(20);
   const auto e = evaluate_trajectory(gt, gt);
   const Json j = to_json(e);
-  for (const char* key : {"pairs", "scale", "ate_rmse_m", "ate_mean_m", "ate_median_m", "ate_max_m",
-                          "rpe_trans_rmse_m", "rpe_rot_rmse_deg", "path_length_m", "ate_percent_of_path"})
+  for (const char* key : {"pairs", "scale", "ate_rmse_m", "ate_mean_m", "ate_median_m", "ate_max_m", "rpe_trans_rmse_m",
+                          "rpe_rot_rmse_deg", "path_length_m", "ate_percent_of_path"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j.at("pairs").get<double>(), 20.0);
   EXPECT_DOUBLE_EQ(j.at("path_length_m").get<double>(), e.path_length_m);

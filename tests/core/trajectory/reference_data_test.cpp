@@ -36,12 +36,13 @@ TEST_P(ReferenceFigures, Reproduced) {
   EXPECT_NEAR(se3.ate_rmse_m, ref.ate_se3, 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SharedData, ReferenceFigures,
-    ::testing::Values(
-        Reference{"freiburg1_xyz-ORB_kf_mono.txt", "freiburg1_xyz-groundtruth.txt", 32, 1.1056, 0.00975, 0.02430},
-        Reference{"fr2_desk_ORB_kf_mono.txt", "fr2_desk_groundtruth.txt", 118, 2.2280, 0.00773, 0.93905},
-        Reference{"freiburg1_xyz-rgbdslam.txt", "freiburg1_xyz-groundtruth.txt", 785, 1.0080, 0.01339, 0.01347}));
+INSTANTIATE_TEST_SUITE_P(SharedData, ReferenceFigures,
+                         ::testing::Values(Reference{"freiburg1_xyz-ORB_kf_mono.txt", "freiburg1_xyz-groundtruth.txt",
+                                                     32, 1.1056, 0.00975, 0.02430},
+                                           Reference{"fr2_desk_ORB_kf_mono.txt", "fr2_desk_groundtruth.txt", 118,
+                                                     2.2280, 0.00773, 0.93905},
+                                           Reference{"freiburg1_xyz-rgbdslam.txt", "freiburg1_xyz-groundtruth.txt", 785,
+                                                     1.0080, 0.01339, 0.01347}));
 
 // The project's own copy of fr1_xyz (data/trajectories), so that the first
 // reference row is checked on a fresh clone too.
@@ -61,7 +62,8 @@ TEST(ReferenceData, KittiWithTimesFile) {
   FACADESLAM_REQUIRE_SHARED_DATA("trajectories");
   const auto dir = test::shared_data_dir() / "trajectories";
   const auto gt = read_trajectory(dir / "KITTI_00_gt.txt", TrajectoryFormat::kitti, dir / "KITTI_00_gt_times.txt");
-  const auto est = read_trajectory(dir / "KITTI_00_ORB.txt", TrajectoryFormat::auto_detect, dir / "KITTI_00_gt_times.txt");
+  const auto est =
+      read_trajectory(dir / "KITTI_00_ORB.txt", TrajectoryFormat::auto_detect, dir / "KITTI_00_gt_times.txt");
   ASSERT_EQ(gt.size(), 4541u);
   EXPECT_NEAR(gt.back().timestamp, 470.0, 1.0);  // KITTI 00 lasts about 7.8 minutes
   const auto e = evaluate_trajectory(gt, est, {AlignmentMode::se3});

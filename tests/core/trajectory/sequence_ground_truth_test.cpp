@@ -61,9 +61,9 @@ TEST(SequenceGroundTruth, TumIsTheFileAsItIs) {
 TEST(SequenceGroundTruth, OnePoseIsAnError) {
   test::TempDir dir;
   test::write_text(dir / "one.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n");
-  EXPECT_THAT(error_of([&] { SequenceGroundTruth gt(dir / "one.txt"); }),
-              StartsWith((dir / "one.txt").string() +
-                         ": has 1 pose (expected a ground-truth trajectory of at least 2)"));
+  EXPECT_THAT(
+      error_of([&] { SequenceGroundTruth gt(dir / "one.txt"); }),
+      StartsWith((dir / "one.txt").string() + ": has 1 pose (expected a ground-truth trajectory of at least 2)"));
 }
 
 }  // namespace

@@ -38,9 +38,7 @@ TEST(TopView, AutoOnAStaticOrEmptyPathIsTheXyPlane) {
   EXPECT_EQ(top_view_axes("auto", line({0, 0, 0}, {0, 0, 0})), (std::array<int, 2>{0, 1}));
 }
 
-TEST(TopView, RejectsAnUnknownPlane) {
-  EXPECT_THROW(top_view_axes("zx", Trajectory{}), Error);
-}
+TEST(TopView, RejectsAnUnknownPlane) { EXPECT_THROW(top_view_axes("zx", Trajectory{}), Error); }
 
 }  // namespace
 }  // namespace facadeslam

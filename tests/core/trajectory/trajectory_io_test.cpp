@@ -102,9 +102,10 @@ TEST(TrajectoryIo, DetectsTheFormatByTheColumnCount) {
 TEST(TrajectoryIo, KittiRotationsAreSnappedToOrthonormal) {
   test::TempDir dir;
   // 7 significant digits, as KITTI files print them.
-  test::write_text(dir / "k.txt", "9.999978e-01 5.272628e-04 -2.066935e-03 -4.690294e-02 -5.296506e-04 "
-                                  "9.999992e-01 -1.154865e-03 -2.839928e-02 2.066324e-03 1.155958e-03 "
-                                  "9.999971e-01 8.586941e-01\n");
+  test::write_text(dir / "k.txt",
+                   "9.999978e-01 5.272628e-04 -2.066935e-03 -4.690294e-02 -5.296506e-04 "
+                   "9.999992e-01 -1.154865e-03 -2.839928e-02 2.066324e-03 1.155958e-03 "
+                   "9.999971e-01 8.586941e-01\n");
   const auto t = read_trajectory(dir / "k.txt");
   const Eigen::Matrix3d R = t[0].T_w_c.linear();
   EXPECT_LT((R.transpose() * R - Eigen::Matrix3d::Identity()).norm(), 1e-14);
@@ -177,7 +178,8 @@ TEST_F(TrajectoryIoBadInput, TrailingGarbageInANumber) {
 }
 
 TEST_F(TrajectoryIoBadInput, NonFiniteNumber) {
-  EXPECT_THAT(read_error("1 0 nan 0 0 0 0 1\n"), AllOf(StartsWith(file() + ":1: expected 8 numbers"), HasSubstr("'nan'")));
+  EXPECT_THAT(read_error("1 0 nan 0 0 0 0 1\n"),
+              AllOf(StartsWith(file() + ":1: expected 8 numbers"), HasSubstr("'nan'")));
   EXPECT_THAT(read_error("1 inf 0 0 0 0 0 1\n"), HasSubstr("'inf' is not a finite number"));
 }
 
@@ -200,7 +202,8 @@ TEST_F(TrajectoryIoBadInput, ZeroQuaternion) {
 }
 
 TEST_F(TrajectoryIoBadInput, UnknownColumnCount) {
-  EXPECT_THAT(read_error("1 2 3 4\n"), AllOf(StartsWith(file() + ":1: "), HasSubstr("8 numbers per line (TUM) or 12 (KITTI), got 4")));
+  EXPECT_THAT(read_error("1 2 3 4\n"),
+              AllOf(StartsWith(file() + ":1: "), HasSubstr("8 numbers per line (TUM) or 12 (KITTI), got 4")));
 }
 
 TEST_F(TrajectoryIoBadInput, KittiFileReadAsTum) {

@@ -47,9 +47,9 @@ TEST(ByteStream, AShortReadNamesTheFileWhatAndWhere) {
   ByteWriter w;
   w.put(std::uint16_t{1});
   ByteReader r(w.bytes(), "cut.bin", "damaged test file");
-  EXPECT_THAT(failure_of([&] { r.get<std::uint32_t>("the version"); }),
-              AllOf(HasSubstr("cut.bin"), HasSubstr("damaged test file"), HasSubstr("the version"),
-                    HasSubstr("byte 0 of 2")));
+  EXPECT_THAT(
+      failure_of([&] { r.get<std::uint32_t>("the version"); }),
+      AllOf(HasSubstr("cut.bin"), HasSubstr("damaged test file"), HasSubstr("the version"), HasSubstr("byte 0 of 2")));
 }
 
 TEST(ByteStream, ACountIsBoundedByItsMaximumAndByTheBytesLeft) {

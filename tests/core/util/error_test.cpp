@@ -13,7 +13,10 @@ using ::testing::StartsWith;
 
 TEST(ErrorText, ControlBytesAreEscapedValidUtf8Kept) {
   EXPECT_EQ(printable("a\x1b[31mb\xff"), "a\\x1b[31mb\\xff");
-  EXPECT_EQ(printable("Stra\xc3\x9f" "e"), "Stra\xc3\x9f" "e");
+  EXPECT_EQ(printable("Stra\xc3\x9f"
+                      "e"),
+            "Stra\xc3\x9f"
+            "e");
 }
 
 TEST(ErrorText, AQuotedEchoOfAHugeLineIsCut) {

@@ -11,9 +11,9 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
+using test::error_of;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-using test::error_of;
 
 struct AllowedForTheTest {
   explicit AllowedForTheTest(bool allowed) { allow_paths_outside_inputs(allowed); }
@@ -30,9 +30,10 @@ TEST(InputConfinement, PathsLeadingOutOfTheFolderAreRefused) {
   EXPECT_FALSE(path_confined("/etc/passwd", dir / "seq"));
   EXPECT_FALSE(path_confined(dir / "seq" / ".." / ".." / "x.png", dir / "seq"));
   EXPECT_FALSE(path_confined(dir / "seq" / "etc-link" / "passwd", dir / "seq")) << "out through a link";
-  EXPECT_THAT(error_of([&] { require_confined("/etc/passwd", dir / "seq", dir / "seq" / "rgb.txt", 4, "/etc/passwd"); }),
-              AllOf(HasSubstr((dir / "seq" / "rgb.txt").string() + ": line 4: '/etc/passwd' leads outside"),
-                    HasSubstr("--allow-outside-paths")));
+  EXPECT_THAT(
+      error_of([&] { require_confined("/etc/passwd", dir / "seq", dir / "seq" / "rgb.txt", 4, "/etc/passwd"); }),
+      AllOf(HasSubstr((dir / "seq" / "rgb.txt").string() + ": line 4: '/etc/passwd' leads outside"),
+            HasSubstr("--allow-outside-paths")));
 }
 
 TEST(InputConfinement, TheUserMayAllowThem) {

@@ -20,9 +20,9 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
+using test::error_of;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-using test::error_of;
 
 // The process id a lock file names (0 when it names none).
 long pid_in(const fs::path& lock_file) {

@@ -15,9 +15,9 @@ namespace facadeslam {
 namespace {
 
 namespace fs = std::filesystem;
+using test::error_of;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-using test::error_of;
 
 void put_file(const fs::path& path, const std::string& bytes) {
   fs::create_directories(path.parent_path());
@@ -96,8 +96,8 @@ TEST(OutputFolder, AnEarlierOutputIsReplaceableAnythingElseIsNot) {
   // A user's file beside them; a report.json that is plain text; a file of
   // the user's in a subfolder; a hidden folder; a symbolic link.
   put_file(out / "notes.txt", "mine");
-  EXPECT_THAT(error_of([&] { plan.check(); }),
-              AllOf(HasSubstr(out.string()), HasSubstr("--out holds 'notes.txt'"), HasSubstr("an earlier test output")));
+  EXPECT_THAT(error_of([&] { plan.check(); }), AllOf(HasSubstr(out.string()), HasSubstr("--out holds 'notes.txt'"),
+                                                     HasSubstr("an earlier test output")));
   fs::remove(out / "notes.txt");
   put_file(out / "report.json", "plain text");
   EXPECT_THAT(foreign_entry(out, *layout()), HasSubstr("'report.json', which is not a test report"));

@@ -57,9 +57,11 @@ TEST(LocalBaSelection, NeverFreesTheGaugeKeyframe) {
 }
 
 TEST(LocalBaSelection, TiesAreBrokenBySmallerId) {
-  const std::vector<KeyFrameCentre> kfs = {
-      {1, Eigen::Vector3d(-5, 0, 0)}, {2, Eigen::Vector3d(0, 0, 0)}, {3, Eigen::Vector3d(1, 0, 0)},
-      {4, Eigen::Vector3d(-1, 0, 0)}, {5, Eigen::Vector3d(0, 1, 0)}};
+  const std::vector<KeyFrameCentre> kfs = {{1, Eigen::Vector3d(-5, 0, 0)},
+                                           {2, Eigen::Vector3d(0, 0, 0)},
+                                           {3, Eigen::Vector3d(1, 0, 0)},
+                                           {4, Eigen::Vector3d(-1, 0, 0)},
+                                           {5, Eigen::Vector3d(0, 1, 0)}};
   LocalBaOptions options;
   options.neighbours = 2;
   const BaSelection s = local_ba_selection(kfs, {}, 2, options);  // 3, 4, 5 all at distance 1
@@ -78,14 +80,14 @@ TEST(LocalBaSelection, SmallMapFreesAllButTheGauge) {
 
 TEST(LocalBaSelection, RejectsBadInput) {
   const auto kfs = line_of_keyframes();
-  EXPECT_THROW(local_ba_selection(kfs, {}, 99), Error);                      // unknown newest
-  EXPECT_THROW(local_ba_selection(kfs, {{42, 1}}, 16), Error);              // unknown observer
+  EXPECT_THROW(local_ba_selection(kfs, {}, 99), Error);         // unknown newest
+  EXPECT_THROW(local_ba_selection(kfs, {{42, 1}}, 16), Error);  // unknown observer
   auto duplicate = kfs;
   duplicate.push_back(kfs[2]);
-  EXPECT_THROW(local_ba_selection(duplicate, {}, 16), Error);               // repeated id
+  EXPECT_THROW(local_ba_selection(duplicate, {}, 16), Error);  // repeated id
   auto not_finite = kfs;
   not_finite[3].centre_w.x() = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(local_ba_selection(not_finite, {}, 16), Error);              // NaN centre
+  EXPECT_THROW(local_ba_selection(not_finite, {}, 16), Error);  // NaN centre
 }
 
 TEST(GlobalBaSelection, AllFreeButTheFirst) {

@@ -68,7 +68,8 @@ inline std::vector<SE3d> poses_of(const BaProblem& problem) {
 
 inline double max_point_error(const BaProblem& problem, const std::vector<Eigen::Vector3d>& reference) {
   double e = 0.0;
-  for (std::size_t i = 0; i < problem.points.size(); ++i) e = std::max(e, (problem.points[i].p_w - reference[i]).norm());
+  for (std::size_t i = 0; i < problem.points.size(); ++i)
+    e = std::max(e, (problem.points[i].p_w - reference[i]).norm());
   return e;
 }
 

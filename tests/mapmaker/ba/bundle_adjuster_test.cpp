@@ -156,8 +156,7 @@ class RobustLossTest : public ::testing::TestWithParam<OutlierCase> {
  protected:
   // Solves the street scene with 0.5 px noise, with or without 5 % gross
   // outliers (20 px), from the perturbed start of the case.
-  BaResult solve(bool with_outliers, std::vector<std::size_t>* injected, test::PoseErrors* errors,
-                 BaLoss loss) const {
+  BaResult solve(bool with_outliers, std::vector<std::size_t>* injected, test::PoseErrors* errors, BaLoss loss) const {
     const Camera camera = test::pinhole_camera();
     StreetScene scene = street(camera);
     add_pixel_noise(scene.problem, 0.5, 31);
@@ -274,10 +273,12 @@ TEST(BundleAdjuster, FixedBlocksDoNotMove) {
   const BaResult result = BundleAdjuster().solve(problem, camera);
   EXPECT_LT(result.final_rms_px, result.initial_rms_px);
   for (std::size_t i : {std::size_t{0}, std::size_t{3}, problem.keyframes.size() - 1}) {
-    EXPECT_EQ(problem.keyframes[i].T_c_w.unit_quaternion().coeffs(), before.keyframes[i].T_c_w.unit_quaternion().coeffs());
+    EXPECT_EQ(problem.keyframes[i].T_c_w.unit_quaternion().coeffs(),
+              before.keyframes[i].T_c_w.unit_quaternion().coeffs());
     EXPECT_EQ(problem.keyframes[i].T_c_w.translation(), before.keyframes[i].T_c_w.translation());
   }
-  for (std::size_t i = 0; i + 1 < problem.points.size(); i += 10) EXPECT_EQ(problem.points[i].p_w, before.points[i].p_w);
+  for (std::size_t i = 0; i + 1 < problem.points.size(); i += 10)
+    EXPECT_EQ(problem.points[i].p_w, before.points[i].p_w);
   EXPECT_EQ(problem.points.back().p_w, before.points.back().p_w);
   // ... while the free ones did move.
   EXPECT_NE(problem.keyframes[1].T_c_w.translation(), before.keyframes[1].T_c_w.translation());
@@ -363,7 +364,8 @@ TEST(BundleAdjuster, PointsBehindACameraStayFiniteAndAreReported) {
   const Eigen::Vector3d truth = T_w_c2 * Eigen::Vector3d(0.3, -0.2, 6.0);
   problem.points.push_back({5001, T_w_c2 * Eigen::Vector3d(0.3, -0.2, -6.0), false});
   for (std::size_t k : {std::size_t{2}, std::size_t{3}, std::size_t{4}})
-    problem.observations.push_back({k, problem.points.size() - 1, camera.project(problem.keyframes[k].T_c_w * truth), 0});
+    problem.observations.push_back(
+        {k, problem.points.size() - 1, camera.project(problem.keyframes[k].T_c_w * truth), 0});
 
   test::fix_gauge_with_anchor(problem, scene.true_T_c_w);  // else the outliers could pull the free scale
   const BaResult result = BundleAdjuster().solve(problem, camera);

@@ -138,7 +138,8 @@ TEST(CameraPath, SameSeedSamePathOtherSeedOtherJitter) {
   handheld.translation = 0.005;
   handheld.rotation_deg = 0.2;
   const std::vector<SegmentSpec> walk = {segment(SegmentType::walk, 2.0)};
-  const CameraPath a(start_at(0), walk, handheld, 4), b(start_at(0), walk, handheld, 4), c(start_at(0), walk, handheld, 5);
+  const CameraPath a(start_at(0), walk, handheld, 4), b(start_at(0), walk, handheld, 4),
+      c(start_at(0), walk, handheld, 5);
   EXPECT_TRUE(a.T_w_c(0.77).isApprox(b.T_w_c(0.77), 0.0));
   EXPECT_FALSE(a.T_w_c(0.77).isApprox(c.T_w_c(0.77), 1e-9));
 }

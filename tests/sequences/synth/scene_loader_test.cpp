@@ -15,23 +15,24 @@
 namespace facadeslam {
 namespace {
 
-using ::testing::HasSubstr;
 using synth::load_scene;
+using ::testing::HasSubstr;
 
 TEST(SceneLoader, ReadsEveryPartOfAScene) {
   test::TempDir dir;
   std::string yaml = test::small_scene_yaml(7);
-  yaml += "handheld:\n  translation: 0.002\n  rotation: 0.1\n"
-          "motion_blur:\n  samples: 3\n  shutter: 0.5\n"
-          "lighting:\n  - time: 0\n  - time: 0.5\n    scale: 0.8\n    shift: -5\n    temperature: 4000\n"
-          "cars:\n  - image: images/" + std::string(test::kCarPhoto) + ".jpg\n" +
-          "    label: labels/" + test::kCarPhoto + ".png\n" +
-          "    crop: [39, 386, 324, 95]\n    width: 4.2\n    from: [20, -2]\n    to: [-5, -2]\n"
-          "    facing: 90\n    speed: 6\n    start: 0.2\n"
-          "vegetation:\n  - image: images/" + test::kTreePhoto + ".jpg\n" +
-          "    label: labels/" + test::kTreePhoto + ".png\n" +
-          "    crop: [324, 79, 187, 280]\n    width: 3\n    position: [6, 5, 0]\n    facing: -90\n"
-          "    sway:\n      amplitude: 0.2\n      frequency: 0.5\n";
+  yaml +=
+      "handheld:\n  translation: 0.002\n  rotation: 0.1\n"
+      "motion_blur:\n  samples: 3\n  shutter: 0.5\n"
+      "lighting:\n  - time: 0\n  - time: 0.5\n    scale: 0.8\n    shift: -5\n    temperature: 4000\n"
+      "cars:\n  - image: images/" +
+      std::string(test::kCarPhoto) + ".jpg\n" + "    label: labels/" + test::kCarPhoto + ".png\n" +
+      "    crop: [39, 386, 324, 95]\n    width: 4.2\n    from: [20, -2]\n    to: [-5, -2]\n"
+      "    facing: 90\n    speed: 6\n    start: 0.2\n"
+      "vegetation:\n  - image: images/" +
+      test::kTreePhoto + ".jpg\n" + "    label: labels/" + test::kTreePhoto + ".png\n" +
+      "    crop: [324, 79, 187, 280]\n    width: 3\n    position: [6, 5, 0]\n    facing: -90\n"
+      "    sway:\n      amplitude: 0.2\n      frequency: 0.5\n";
   const synth::SceneSpec s = load_scene(test::write_scene(dir.path(), yaml));
   EXPECT_EQ(s.camera.width(), 160);
   EXPECT_EQ(s.camera.height(), 120);
@@ -88,30 +89,43 @@ TEST(SceneLoader, LoadsTheShippedStreetScenes) {
 // and what was expected.
 struct BadScene {
   std::string name;
-  std::string from, to;  // textual mutation of the valid scene
+  std::string from, to;               // textual mutation of the valid scene
   std::vector<std::string> expected;  // substrings of the message
 };
 
 std::vector<BadScene> bad_scenes() {
   const std::string photo_a = test::kFacadePhotoA;
   return {
-      {"missing_texture", "images/" + photo_a + ".jpg", "images/no-such-photo.jpg",
+      {"missing_texture",
+       "images/" + photo_a + ".jpg",
+       "images/no-such-photo.jpg",
        {"facades[0].image", "existing file", "no-such-photo.jpg"}},
-      {"missing_label_map", "labels/" + photo_a + ".png", "labels/no-such-map.png",
+      {"missing_label_map",
+       "labels/" + photo_a + ".png",
+       "labels/no-such-map.png",
        {"facades[0].label", "existing file"}},
       {"unknown_top_level_key", "fps: 10", "fps: 10\nframs: 3", {"'frams'", "unknown key"}},
-      {"unknown_facade_key", "    width: 14.0", "    width: 14.0\n    colour: red", {"facades[1].colour", "unknown key"}},
+      {"unknown_facade_key",
+       "    width: 14.0",
+       "    width: 14.0\n    colour: red",
+       {"facades[1].colour", "unknown key"}},
       {"missing_required_key", "    width: 14.0\n", "", {"facades[1].width", "required key is missing"}},
       {"wrong_type", "fps: 10", "fps: fast", {"'fps'", "expected a number"}},
       {"out_of_range", "    width: 12.0", "    width: -3", {"facades[0].width", "(0, 1000]", "-3"}},
-      {"crop_outside_photo", "crop: [8, 24, 504, 472]", "crop: [8, 24, 900, 472]",
+      {"crop_outside_photo",
+       "crop: [8, 24, 504, 472]",
+       "crop: [8, 24, 900, 472]",
        {"facades[0].crop", "inside the 512x512 photo"}},
       {"fractional_crop", "crop: [8, 24, 504, 472]", "crop: [8.5, 24, 504, 472]", {"facades[0].crop", "whole pixels"}},
-      {"label_map_of_another_size", "labels/" + photo_a + ".png", "labels/" + std::string(test::kFacadePhotoB) + ".png",
+      {"label_map_of_another_size",
+       "labels/" + photo_a + ".png",
+       "labels/" + std::string(test::kFacadePhotoB) + ".png",
        {"facades[0].label", "image's size 512x512", "683x512"}},
       {"trajectory_too_short", "frames: 4", "frames: 40", {"'trajectory'", "lasts 1 s", "3.9 s"}},
       {"unknown_segment_type", "  - type: walk", "  - type: jog", {"trajectory[0].type", "'pan'", "jog"}},
-      {"key_of_another_segment_type", "    speed: 1.0", "    speed: 1.0\n    distance: 2",
+      {"key_of_another_segment_type",
+       "    speed: 1.0",
+       "    speed: 1.0\n    distance: 2",
        {"trajectory[0].distance", "unknown key"}},
       {"facades_not_a_list", "facades:\n", "facades: 3\nunused:\n", {"'facades'", "a list of mappings"}},
       {"street_end_before_start", "  end: 40", "  end: -10", {"street.end", "> start"}},
@@ -153,7 +167,8 @@ TEST(SceneLoader, RejectsACarPhotoWithoutCarPixels) {
   test::TempDir dir;
   const std::string photo = test::kFacadePhotoA;
   const std::string yaml = test::small_scene_yaml() + "cars:\n  - image: images/" + photo + ".jpg\n" +
-                           "    label: labels/" + photo + ".png\n    crop: [8, 24, 100, 100]\n    width: 4\n"
+                           "    label: labels/" + photo +
+                           ".png\n    crop: [8, 24, 100, 100]\n    width: 4\n"
                            "    from: [0, 0]\n    to: [5, 0]\n    facing: 90\n    speed: 5\n";
   EXPECT_THAT([&] { load_scene(test::write_scene(dir.path(), yaml)); },
               ::testing::ThrowsMessage<Error>(HasSubstr("cars[0].label': expected a label map with car pixels")));

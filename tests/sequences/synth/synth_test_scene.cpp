@@ -12,10 +12,12 @@ std::string small_scene_yaml(int frames) {
   return "camera: " + camera + "\n" +
          "resolution: [160, 120]\n"
          "fps: 10\n"
-         "frames: " + std::to_string(frames) + "\n" +
+         "frames: " +
+         std::to_string(frames) + "\n" +
          "seed: 3\n"
          "noise: 2.0\n"
-         "photos: " + photos + "\n" +
+         "photos: " +
+         photos + "\n" +
          "street:\n"
          "  road_width: 8.0\n"
          "  pavement_width: 6.0\n"
@@ -25,14 +27,14 @@ std::string small_scene_yaml(int frames) {
          "sky:\n"
          "  clouds: 0.3\n"
          "facades:\n"
-         "  - image: images/" + kFacadePhotoA + ".jpg\n" +
-         "    label: labels/" + kFacadePhotoA + ".png\n" +
+         "  - image: images/" +
+         kFacadePhotoA + ".jpg\n" + "    label: labels/" + kFacadePhotoA + ".png\n" +
          "    crop: [8, 24, 504, 472]\n"
          "    width: 12.0\n"
          "    position: [8.0, 7.0, 0.0]\n"
          "    facing: -90\n"
-         "  - image: images/" + kFacadePhotoB + ".jpg\n" +
-         "    label: labels/" + kFacadePhotoB + ".png\n" +
+         "  - image: images/" +
+         kFacadePhotoB + ".jpg\n" + "    label: labels/" + kFacadePhotoB + ".png\n" +
          "    width: 14.0\n"
          "    position: [8.0, -7.0, 0.0]\n"
          "    facing: 90\n"

@@ -158,7 +158,10 @@ std::vector<test::ReferenceQuad> reference_quads(const synth::SceneSpec& spec) {
   const synth::StreetSpec& s = spec.street;
   const double half = 0.5 * s.road_width, length = s.end - s.start;
   quads.push_back({{s.start, half, 0}, {length, 0, 0}, {0, -s.road_width, 0}, {}, id_of(FacadeClass::road)});
-  quads.push_back({{s.start, half + s.pavement_width, 0}, {length, 0, 0}, {0, -s.pavement_width, 0}, {},
+  quads.push_back({{s.start, half + s.pavement_width, 0},
+                   {length, 0, 0},
+                   {0, -s.pavement_width, 0},
+                   {},
                    id_of(FacadeClass::pavement)});
   quads.push_back({{s.start, -half, 0}, {length, 0, 0}, {0, -s.pavement_width, 0}, {}, id_of(FacadeClass::pavement)});
   for (const auto& f : spec.facades) {
@@ -211,9 +214,7 @@ Agreement compare_first_frame(const test::TempDir& dir, const std::string& yaml)
 
 // The scene's street is a whole number of texels across, so the rendered
 // ground strips coincide with the reference quads.
-std::string full_size_scene() {
-  return test::replace_once(test::small_scene_yaml(1), "resolution: [160, 120]\n", "");
-}
+std::string full_size_scene() { return test::replace_once(test::small_scene_yaml(1), "resolution: [160, 120]\n", ""); }
 
 TEST(Synthesize, LabelsAgreeWithTheSourceLabelMapsUnderTheSameProjection) {
   test::TempDir dir;
@@ -243,14 +244,15 @@ TEST(Synthesize, LabelsAgreeThroughADistortedCamera) {
 
 // A still camera watching a car cross and a tree sway.
 std::string moving_objects_scene() {
-  std::string yaml = test::replace_once(test::small_scene_yaml(6), "  - type: walk\n    duration: 1.0\n    speed: 1.0\n",
-                                        "  - type: pan\n    duration: 1.0\n    distance: 0\n");
-  yaml += "cars:\n  - image: images/" + std::string(test::kCarPhoto) + ".jpg\n" +
-          "    label: labels/" + test::kCarPhoto + ".png\n" +
+  std::string yaml =
+      test::replace_once(test::small_scene_yaml(6), "  - type: walk\n    duration: 1.0\n    speed: 1.0\n",
+                         "  - type: pan\n    duration: 1.0\n    distance: 0\n");
+  yaml += "cars:\n  - image: images/" + std::string(test::kCarPhoto) + ".jpg\n" + "    label: labels/" +
+          test::kCarPhoto + ".png\n" +
           "    crop: [39, 386, 324, 95]\n    width: 4.2\n    from: [12, -2]\n    to: [12, 2]\n"
           "    facing: 180\n    speed: 8\n    start: 0.0\n"
-          "vegetation:\n  - image: images/" + test::kTreePhoto + ".jpg\n" +
-          "    label: labels/" + test::kTreePhoto + ".png\n" +
+          "vegetation:\n  - image: images/" +
+          test::kTreePhoto + ".jpg\n" + "    label: labels/" + test::kTreePhoto + ".png\n" +
           "    crop: [324, 79, 187, 280]\n    width: 3\n    position: [9, 4.5, 0]\n    facing: -110\n"
           "    sway:\n      amplitude: 0.6\n      frequency: 1.3\n";
   return test::replace_once(yaml, "  heading: 20", "  heading: 5");

@@ -39,14 +39,14 @@ TEST(ModelScoring, ExactHomographyScoresTheMaximumAndSpotsAnOutlier) {
   EXPECT_TRUE(s.inliers[6]);
   EXPECT_NEAR(s.score, 19 * 2 * kChiSquare95TwoDof, 1e-6);
   // An error of 2 px at sigma 1: chi-square 4 < 5.991, inlier, scores 1.991 in that direction.
-  const ModelScore s2 = score_homography(Eigen::Matrix3d::Identity(), {Eigen::Vector2d(0, 0)},
-                                         {Eigen::Vector2d(0, 2)}, 1.0);
+  const ModelScore s2 =
+      score_homography(Eigen::Matrix3d::Identity(), {Eigen::Vector2d(0, 0)}, {Eigen::Vector2d(0, 2)}, 1.0);
   EXPECT_EQ(s2.inlier_count, 1);
   EXPECT_NEAR(s2.score, 2 * (kChiSquare95TwoDof - 4.0), 1e-9);
   // Sigma scales the test: the same 2 px at sigma 0.5 is chi-square 16.
-  EXPECT_EQ(score_homography(Eigen::Matrix3d::Identity(), {Eigen::Vector2d(0, 0)}, {Eigen::Vector2d(0, 2)}, 0.5)
-                .inlier_count,
-            0);
+  EXPECT_EQ(
+      score_homography(Eigen::Matrix3d::Identity(), {Eigen::Vector2d(0, 0)}, {Eigen::Vector2d(0, 2)}, 0.5).inlier_count,
+      0);
 }
 
 TEST(ModelScoring, SingularHomographyScoresZero) {
@@ -102,10 +102,10 @@ TEST(Triangulation, EvaluatePoseSortsPointsByTheChecks) {
     m.rays0.push_back(camera.unproject(m.pixels0.back()));
     m.rays1.push_back(camera.unproject(m.pixels1.back()));
   };
-  add({0.1, 0.1, 3.0}, {0, 0});       // 0: good (5.7 deg)
-  add({0.1, 0.1, 100.0}, {0, 0});     // 1: consistent, parallax 0.17 deg < 1 deg
-  add({0.1, 0.1, 3.0}, {0, 8.0});     // 2: 8 px off the epipolar line: reprojection fails
-  add({0.1, 0.1, 3.0}, {100.0, 0});   // 3: disparity reversed: behind the cameras
+  add({0.1, 0.1, 3.0}, {0, 0});      // 0: good (5.7 deg)
+  add({0.1, 0.1, 100.0}, {0, 0});    // 1: consistent, parallax 0.17 deg < 1 deg
+  add({0.1, 0.1, 3.0}, {0, 8.0});    // 2: 8 px off the epipolar line: reprojection fails
+  add({0.1, 0.1, 3.0}, {100.0, 0});  // 3: disparity reversed: behind the cameras
   PointCheckOptions options{2.0, 1.0 * kDeg};
   const PoseEvaluation e = evaluate_pose(camera, T, m, {0, 1, 2, 3}, options);
   EXPECT_EQ(e.consistent, (std::vector<int>{0, 1}));
@@ -132,10 +132,9 @@ TEST(EssentialRefinement, RemovesAPerturbationOfThePose) {
     all.push_back(static_cast<int>(i));
     EXPECT_NEAR(sampson_distance(essential_from_pose(truth), rays0[i], rays1[i]), 0.0, 1e-10);
   }
-  const SE3d start = SE3d::exp((Eigen::Matrix<double, 6, 1>() << 0.02, -0.01, 0.01, 0.4 * kDeg, -0.3 * kDeg,
-                                0.2 * kDeg)
-                                   .finished()) *
-                     truth;
+  const SE3d start =
+      SE3d::exp((Eigen::Matrix<double, 6, 1>() << 0.02, -0.01, 0.01, 0.4 * kDeg, -0.3 * kDeg, 0.2 * kDeg).finished()) *
+      truth;
   const SE3d refined = refine_relative_pose(start, rays0, rays1, all, {500.0, 1.0, 30});
   EXPECT_GT(test::rotation_error_deg(start, truth), 0.3);
   EXPECT_LT(test::rotation_error_deg(refined, truth), 1e-4);

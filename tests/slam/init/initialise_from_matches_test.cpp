@@ -52,12 +52,13 @@ Accuracy measure(const TwoViewResult& r, const SE3d& truth, const test::Syntheti
 }
 
 void print(const char* what, const std::string& camera, const TwoViewResult& r, const Accuracy& a) {
-  std::printf("[ measured ] %s/%s: model %s R_H %.3f inliers H %d E %d, %zu points, median parallax %.2f deg, "
-              "rotation error %.4f deg, direction error %.3f deg, point error median %.3f%% p90 %.3f%%, "
-              "outliers kept %d\n",
-              what, camera.c_str(), to_string(r.model), r.homography_ratio, r.inliers_homography,
-              r.inliers_essential, r.points_c0.size(), r.median_parallax_deg, a.rotation_deg, a.direction_deg,
-              100.0 * a.point_median, 100.0 * a.point_p90, a.outliers_kept);
+  std::printf(
+      "[ measured ] %s/%s: model %s R_H %.3f inliers H %d E %d, %zu points, median parallax %.2f deg, "
+      "rotation error %.4f deg, direction error %.3f deg, point error median %.3f%% p90 %.3f%%, "
+      "outliers kept %d\n",
+      what, camera.c_str(), to_string(r.model), r.homography_ratio, r.inliers_homography, r.inliers_essential,
+      r.points_c0.size(), r.median_parallax_deg, a.rotation_deg, a.direction_deg, 100.0 * a.point_median,
+      100.0 * a.point_p90, a.outliers_kept);
 }
 
 class InitialiseFromMatchesCameras : public ::testing::TestWithParam<std::string> {};
@@ -284,8 +285,9 @@ TEST(InitialiseFromMatches, RandomMatchesAreRefused) {
 TEST(InitialiseFromMatches, MismatchedListsThrow) {
   const Camera camera = test::plain_camera();
   const std::vector<Eigen::Vector2d> two(2, Eigen::Vector2d(1, 1)), three(3, Eigen::Vector2d(1, 1));
-  EXPECT_NE(error_of([&] { initialise_from_matches(camera, two, three, TwoViewOptions{}); }).find("2 reference pixels but 3"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { initialise_from_matches(camera, two, three, TwoViewOptions{}); }).find("2 reference pixels but 3"),
+      std::string::npos);
 }
 
 TEST(InitialiseFromMatches, NonFinitePixelThrows) {

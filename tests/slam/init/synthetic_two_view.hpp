@@ -68,7 +68,8 @@ inline SyntheticMatches make_matches(const Camera& camera, const SE3d& T_c1_c0, 
   std::uniform_real_distribution<double> u(5.0, camera.width() - 6.0), v(5.0, camera.height() - 6.0);
   std::uniform_real_distribution<double> depth(2.0, 6.0), unit(0.0, 1.0);
   std::normal_distribution<double> noise(0.0, noise_px);
-  const Eigen::Vector3d normal = Eigen::AngleAxisd(plane_yaw_deg * kDeg, Eigen::Vector3d::UnitY()) * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d normal =
+      Eigen::AngleAxisd(plane_yaw_deg * kDeg, Eigen::Vector3d::UnitY()) * Eigen::Vector3d::UnitZ();
   const double plane_distance = 4.0;
   SyntheticMatches m;
   int attempts = 0;
@@ -78,8 +79,8 @@ inline SyntheticMatches make_matches(const Camera& camera, const SE3d& T_c1_c0, 
     Eigen::Vector2d px0;
     px0 << u(rng), v(rng);
     const Eigen::Vector3d ray = camera.unproject(px0);
-    const Eigen::Vector3d p0 =
-        shape == SceneShape::box ? Eigen::Vector3d(ray * depth(rng)) : Eigen::Vector3d(ray * (plane_distance / normal.dot(ray)));
+    const Eigen::Vector3d p0 = shape == SceneShape::box ? Eigen::Vector3d(ray * depth(rng))
+                                                        : Eigen::Vector3d(ray * (plane_distance / normal.dot(ray)));
     const Eigen::Vector3d p1 = T_c1_c0 * p0;
     if (p1.z() <= 0.1) continue;
     const Eigen::Vector2d px1 = camera.project(p1);

@@ -57,12 +57,13 @@ void expect_initialises_on(const test::TexturedPlane& plane, const char* name) {
   std::vector<double> plane_errors;
   for (const Eigen::Vector3d& p : r.points_c0)
     plane_errors.push_back(std::abs(plane.normal_c0().dot(p * scale) - plane.distance_c0()) / plane.distance_c0());
-  std::printf("[ measured ] %s: success at frame %d (baseline %.1f cm) with the %s, R_H %.3f, %zu points, median "
-              "parallax %.2f deg, rotation error %.3f deg, direction error %.2f deg, plane distance error median "
-              "%.2f%% p90 %.2f%%\n",
-              name, outcome.success_frame, 100.0 * truth.translation().norm(), to_string(r.model),
-              r.homography_ratio, r.points_c0.size(), r.median_parallax_deg, rotation_error, direction_error,
-              100.0 * test::percentile(plane_errors, 0.5), 100.0 * test::percentile(plane_errors, 0.9));
+  std::printf(
+      "[ measured ] %s: success at frame %d (baseline %.1f cm) with the %s, R_H %.3f, %zu points, median "
+      "parallax %.2f deg, rotation error %.3f deg, direction error %.2f deg, plane distance error median "
+      "%.2f%% p90 %.2f%%\n",
+      name, outcome.success_frame, 100.0 * truth.translation().norm(), to_string(r.model), r.homography_ratio,
+      r.points_c0.size(), r.median_parallax_deg, rotation_error, direction_error,
+      100.0 * test::percentile(plane_errors, 0.5), 100.0 * test::percentile(plane_errors, 0.9));
   // Before success it only ever asked for more parallax (or refused a
   // not-yet-good geometry); the tracks never died.
   for (std::size_t i = 0; i + 1 < outcome.statuses.size(); ++i)
@@ -148,8 +149,9 @@ TEST(TwoViewInitialiser, WrongImagesThrow) {
 TEST(TwoViewInitialiser, OptionsOutOfRangeThrow) {
   TwoViewOptions options;
   options.homography_ratio_threshold = 1.5;
-  EXPECT_NE(error_of([&] { TwoViewInitialiser init(test::plain_camera(), options); }).find("homography_ratio_threshold"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { TwoViewInitialiser init(test::plain_camera(), options); }).find("homography_ratio_threshold"),
+      std::string::npos);
   options = {};
   options.tracking.border_px = -1.0;
   EXPECT_NE(error_of([&] { TwoViewInitialiser init(test::plain_camera(), options); }).find("tracking.border_px"),
