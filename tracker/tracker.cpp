@@ -274,23 +274,23 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
   return inliers;
 }
 
-std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> Tracker::relocalise(const Frame& frame) {
+std::optional<Tracker::TrackedFrame> Tracker::relocalise(const Frame& frame) {
   const Stopwatch t0;
   const cv::Mat sbi = make_small_blurry_image(*frame.pyramid);
   std::vector<KeyFrameSnapshot> keyframes = map_.snapshot_keyframes();
   // Tries a starting pose: accepted only when the normal search from it
   // tracks well (not merely "not bad": a wrong pose that happens to find a
   // few points would send the tracker down a wrong path).
-  auto attempt = [&](const SE3d& T_start) -> std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> {
+  auto attempt = [&](const SE3d& T_start) -> std::optional<TrackedFrame> {
     TrackingResult result;
     auto inliers = track_from(T_start, frame, result);
     if (result.quality != TrackingQuality::good) return std::nullopt;
-    return std::pair{std::move(result), std::move(inliers)};
+    return TrackedFrame{std::move(result), std::move(inliers)};
   };
-  auto done = [&](std::pair<TrackingResult, std::vector<TrackedMeasurement>> found, const char* how, KeyFrame::Id id) {
+  auto done = [&](TrackedFrame found, const char* how, KeyFrame::Id id) {
     spdlog::info("frame {}: relocalised ({}) against keyframe {} after {} lost frames", frame.index, how, id,
                  lost_frames_);
-    found.first.timings.relocalise_ms = t0.elapsed_ms();
+    found.result.timings.relocalise_ms = t0.elapsed_ms();
     return std::optional{std::move(found)};
   };
   if (const auto candidate = find_relocalisation_candidate(sbi, keyframes, camera_, options_.relocaliser))
@@ -319,8 +319,8 @@ TrackingResult Tracker::track(const Frame& frame) {
   if (!started_) return {};
 
   // Lost: relocalise, or stay lost.
-  auto relocalised = [&](std::pair<TrackingResult, std::vector<TrackedMeasurement>> found) {
-    TrackingResult& result = found.first;
+  auto relocalised = [&](TrackedFrame found) {
+    TrackingResult& result = found.result;
     // Relocalised on the first bad frame, the last pose is the previous
     // frame's: the motion between them is the motion model's best guess
     // (a car entering a turn relocalises once, not every frame of it).
@@ -335,7 +335,7 @@ TrackingResult Tracker::track(const Frame& frame) {
     result.tracked = true;
     result.relocalised = true;
     // A relocalised view may be new (a multi-view set): it may make a keyframe like any well-tracked frame.
-    consider_keyframe(frame, result, std::move(found.second));
+    consider_keyframe(frame, result, std::move(found.inliers));
     return result;
   };
   if (lost_frames_ >= options_.lost_frames_before_relocalising) {

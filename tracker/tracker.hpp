@@ -117,7 +117,13 @@ class Tracker {
                                              bool coarse = true);
   // A pose for a lost frame: the small blurry image's, else ORB + PnP's;
   // either only if the normal search from it tracks well.
-  std::optional<std::pair<TrackingResult, std::vector<TrackedMeasurement>>> relocalise(const Frame& frame);
+  // A frame tracked from one starting pose: its figures and the measurements
+  // the pose kept (they go to a keyframe if one is made).
+  struct TrackedFrame {
+    TrackingResult result;
+    std::vector<TrackedMeasurement> inliers;
+  };
+  std::optional<TrackedFrame> relocalise(const Frame& frame);
   enum class KeyFrameReason { none, moved, turned };
   KeyFrameReason wants_keyframe(const TrackingResult& result, std::size_t frame_index) const;
   void consider_keyframe(const Frame& frame, TrackingResult& result, std::vector<TrackedMeasurement> inliers);
