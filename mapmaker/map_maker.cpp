@@ -301,7 +301,7 @@ void MapMaker::remove_outlier_points() {
                                     .max_found_ratio = options_.outlier_max_found_ratio,
                                     .grace_keyframes = kSingleViewGraceKeyframes};
   IsLeftOut left_out;
-  if (options_.labels.moving.any())
+  if (options_.labels.leaves_points_out())
     left_out = [this](const MapPoint& point) { return options_.labels.left_out(point); };
   const std::vector<std::shared_ptr<MapPoint>> outliers =
       points_to_cull(map_.keyframes(), map_.points(), culling, left_out);
@@ -416,7 +416,7 @@ void MapMaker::run() {
 }
 
 PointWeight MapMaker::ba_point_weight() const {
-  if (!options_.labels.moving.any()) return {};
+  if (!options_.labels.leaves_points_out()) return {};
   return [this](const MapPoint& point) { return options_.labels.ba_weight(point); };
 }
 

@@ -115,14 +115,14 @@ class Tracker {
   // from `T_start`; fills `result`.
   std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,
                                              bool coarse = true);
-  // A pose for a lost frame: the small blurry image's, else ORB + PnP's;
-  // either only if the normal search from it tracks well.
   // A frame tracked from one starting pose: its figures and the measurements
   // the pose kept (they go to a keyframe if one is made).
   struct TrackedFrame {
     TrackingResult result;
     std::vector<TrackedMeasurement> inliers;
   };
+  // A pose for a lost frame: the small blurry image's, else ORB + PnP's;
+  // either only if the normal search from it tracks well.
   std::optional<TrackedFrame> relocalise(const Frame& frame);
   enum class KeyFrameReason { none, moved, turned };
   KeyFrameReason wants_keyframe(const TrackingResult& result, std::size_t frame_index) const;

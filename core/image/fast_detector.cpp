@@ -84,6 +84,12 @@ void fast_scores(const std::uint8_t* const* centres, std::size_t count, const in
   for (; i < count; ++i) scores[i] = fast_score(centres[i], offsets);
 }
 
+// The candidates of one image row: [first, last) of the raster-ordered list.
+struct CandidateRow {
+  int y = -1;
+  std::size_t first = 0, last = 0;
+};
+
 // Non-maximum suppression reads the scores of three rows at a time: kept in
 // a ring (a few kB that stay in the L1 cache, where a whole score image did
 // not), every pixel that is not a candidate 0.
@@ -93,27 +99,22 @@ class ScoreRows {
     for (auto& row : rows_) row.assign(static_cast<std::size_t>(cols), 0.f);
     zeros_.assign(static_cast<std::size_t>(cols), 0.f);
   }
-  // Row y's scores (candidates [first, last) of it) replace what its slot held.
-  void put(int y, const std::vector<cv::KeyPoint>& candidates, const std::vector<float>& scores, std::size_t first,
-           std::size_t last) {
-    Slot& slot = slots_[static_cast<std::size_t>(y % 3)];
-    std::vector<float>& row = rows_[static_cast<std::size_t>(y % 3)];
-    for (std::size_t i = slot.first; i < slot.last; ++i) row[static_cast<std::size_t>(candidates[i].pt.x)] = 0.f;
-    for (std::size_t i = first; i < last; ++i) row[static_cast<std::size_t>(candidates[i].pt.x)] = scores[i];
-    slot = {y, first, last};
+  // Row `next`'s scores replace what its slot held.
+  void put(const CandidateRow& next, const std::vector<cv::KeyPoint>& candidates, const std::vector<float>& scores) {
+    CandidateRow& held = held_[static_cast<std::size_t>(next.y % 3)];
+    std::vector<float>& row = rows_[static_cast<std::size_t>(next.y % 3)];
+    for (std::size_t i = held.first; i < held.last; ++i) row[static_cast<std::size_t>(candidates[i].pt.x)] = 0.f;
+    for (std::size_t i = next.first; i < next.last; ++i) row[static_cast<std::size_t>(candidates[i].pt.x)] = scores[i];
+    held = next;
   }
   const float* row(int y) const {
     const std::size_t s = static_cast<std::size_t>(y % 3);
-    return slots_[s].y == y ? rows_[s].data() : zeros_.data();
+    return held_[s].y == y ? rows_[s].data() : zeros_.data();
   }
 
  private:
-  struct Slot {
-    int y = -1;
-    std::size_t first = 0, last = 0;
-  };
   std::array<std::vector<float>, 3> rows_;
-  std::array<Slot, 3> slots_{};
+  std::array<CandidateRow, 3> held_{};
   std::vector<float> zeros_;
 };
 
@@ -155,39 +156,34 @@ std::vector<Corner> detect_fast(const cv::Mat& grey, const FastOptions& options)
   // whether a candidate is one is a coin toss the branch predictor loses.
   std::vector<Corner> corners(candidates.size());
   std::size_t found = 0;
+  thread_local std::vector<CandidateRow> candidate_rows;
+  candidate_rows.clear();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const int y = static_cast<int>(candidates[i].pt.y);
+    if (candidate_rows.empty() || candidate_rows.back().y != y) candidate_rows.push_back({y, i, i});
+    candidate_rows.back().last = i + 1;
+  }
   ScoreRows rows(grey.cols);
-  const auto row_of = [&](std::size_t i) { return static_cast<int>(candidates[i].pt.y); };
-  const auto row_end = [&](std::size_t i) {
-    const int y = row_of(i);
-    while (i < candidates.size() && row_of(i) == y) ++i;
-    return i;
-  };
-  std::size_t next_row = 0;  // first candidate of the next row not yet put in the ring
-  for (std::size_t first = 0; first < candidates.size();) {
-    const std::size_t last = row_end(first);
-    const int y = row_of(first);
-    while (next_row < candidates.size() && row_of(next_row) <= y + 1) {
-      const std::size_t end = row_end(next_row);
-      rows.put(row_of(next_row), candidates, scores, next_row, end);
-      next_row = end;
+  std::size_t next = 0;  // the next row to put in the ring
+  for (const CandidateRow& current : candidate_rows) {
+    for (; next < candidate_rows.size() && candidate_rows[next].y <= current.y + 1; ++next)
+      rows.put(candidate_rows[next], candidates, scores);
+    const int y = current.y;
+    if (y < b || y >= grey.rows - b) continue;
+    const float* above = rows.row(y - 1);
+    const float* row = rows.row(y);
+    const float* below = rows.row(y + 1);
+    for (std::size_t i = current.first; i < current.last; ++i) {
+      const int x = static_cast<int>(candidates[i].pt.x);
+      if (x < b || x >= grey.cols - b) continue;
+      // Branch-free 3x3 maximum test; ties go to the neighbour that comes
+      // first in raster order (strictly greater than the earlier four, not
+      // less than the later four), so a plateau keeps exactly one pixel.
+      const float earlier = std::max(std::max(above[x - 1], above[x]), std::max(above[x + 1], row[x - 1]));
+      const float later = std::max(std::max(row[x + 1], below[x - 1]), std::max(below[x], below[x + 1]));
+      corners[found] = {x, y, row[x]};
+      found += static_cast<std::size_t>((row[x] > earlier) & (row[x] >= later));
     }
-    if (y >= b && y < grey.rows - b) {
-      const float* above = rows.row(y - 1);
-      const float* row = rows.row(y);
-      const float* below = rows.row(y + 1);
-      for (std::size_t i = first; i < last; ++i) {
-        const int x = static_cast<int>(candidates[i].pt.x);
-        if (x < b || x >= grey.cols - b) continue;
-        // Branch-free 3x3 maximum test; ties go to the neighbour that comes
-        // first in raster order (strictly greater than the earlier four, not
-        // less than the later four), so a plateau keeps exactly one pixel.
-        const float earlier = std::max(std::max(above[x - 1], above[x]), std::max(above[x + 1], row[x - 1]));
-        const float later = std::max(std::max(row[x + 1], below[x - 1]), std::max(below[x], below[x + 1]));
-        corners[found] = {x, y, row[x]};
-        found += static_cast<std::size_t>((row[x] > earlier) & (row[x] >= later));
-      }
-    }
-    first = last;
   }
   corners.resize(found);
 

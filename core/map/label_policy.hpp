@@ -26,7 +26,9 @@ struct LabelPolicy {
   int min_reliable_points = 100;   // fewer other points in view: left-out points are searched after all
   double verify_px = 2.0;          // search-level pixels; 0: never verified
 
-  bool active() const { return unreliable.any() || moving.any(); }
+  // Whether any point can be left out (else bundle adjustment and culling
+  // need not ask point by point).
+  bool leaves_points_out() const { return moving.any(); }
   // Left out of tracking, bundle adjustment and the map (once unmeasured).
   bool left_out(const MapPoint& point) const { return moving.contains(point); }
   // The point's weight in the tracker's pose update (0: not searched).

@@ -26,7 +26,7 @@ LabelPolicy shipped_like() {
 
 TEST(LabelPolicy, WeighsUnreliableDownAndLeavesMovingOutOfTrackingAndBa) {
   const LabelPolicy policy = shipped_like();
-  ASSERT_TRUE(policy.active());
+  ASSERT_TRUE(policy.leaves_points_out());
   const auto tree_point = point_voted(kVegetation, 0.8f), car_point = point_voted(kCar, 0.9f);
   const auto wall_point = point_voted(kBuilding, 1.f), unsure_tree_point = point_voted(kVegetation, 0.4f);
   const MapPoint &tree = *tree_point, &car = *car_point, &wall = *wall_point, &unsure_tree = *unsure_tree_point;
@@ -53,7 +53,7 @@ TEST(LabelPolicy, APointInAMovingRegionIsLeftOutWhateverItsLabel) {
 
 TEST(LabelPolicy, WithoutClassesLabelsAreIgnored) {
   const LabelPolicy none;
-  EXPECT_FALSE(none.active());
+  EXPECT_FALSE(none.leaves_points_out());
   const auto car_point = point_voted(kCar, 1.f);
   const MapPoint& car = *car_point;
   EXPECT_EQ(none.tracking_weight(car), 1.0);
