@@ -13,5 +13,6 @@ void add_synth_command(CLI::App& app);
 void add_train_command(CLI::App& app);
 void add_optimise_command(CLI::App& app);
 void add_render_map_command(CLI::App& app);
+void add_config_command(CLI::App& app);
 
 }  // namespace facadeslam::apps

@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
   apps::add_train_command(app);
   apps::add_optimise_command(app);
   apps::add_render_map_command(app);
+  apps::add_config_command(app);
 
   if (const std::string unknown = subcommand_problem(app, argc, argv); !unknown.empty()) {
     std::fprintf(stderr, "facadeslam: %s (see --help)\n", one_line_message(unknown).c_str());

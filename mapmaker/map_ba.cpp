@@ -7,6 +7,7 @@
 
 #include "core/util/error.hpp"
 #include "mapmaker/point_geometry.hpp"
+#include "core/util/assert.hpp"
 
 namespace facadeslam {
 
@@ -27,9 +28,7 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
         if (weight.contains(point_id)) continue;
         const auto p = view.point(point_id);
         const double w = p && weight_of ? weight_of(*p) : 1.0;
-        if (!(w >= 0.0 && w <= 1.0))
-          throw Error("bundle adjustment: point " + std::to_string(point_id) + " has weight " + std::to_string(w) +
-                      ", expected in [0, 1]");
+        FACADESLAM_ASSERT(w >= 0.0 && w <= 1.0, "a point's bundle adjustment weight is in [0, 1]");
         weight.emplace(point_id, w);
       }
   });

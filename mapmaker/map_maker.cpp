@@ -40,7 +40,7 @@ void MapMaker::hand_off(const std::shared_ptr<KeyFrame>& keyframe, const NewPoin
   for (const auto& [id, m] : keyframe->measurements()) {
     if (only && !wanted.contains(id)) continue;
     auto p = map_.point(id);
-    if (p && !p->is_bad()) job.points.push_back({std::move(p), m.pixel});
+    if (p && !p->is_bad()) job.points.push_back({std::move(p), m.level, m.pixel});
   }
   if (!job.points.empty()) new_points_->push(std::move(job));
 }

@@ -3,6 +3,7 @@
 // optional, defaults are PTAM's; unknown keys and bad values are errors).
 #include <bitset>
 #include <filesystem>
+#include <ostream>
 
 #include "core/map/map_point.hpp"
 #include "mapmaker/map_maker_options.hpp"
@@ -53,6 +54,9 @@ struct SemanticsOptions {
   // close-up car's points car one by one, many of its region's. Step 0: no
   // regions.
   semantics::MovingRegionOptions moving_regions;
+  // Keyframes waiting for the worker at most (threaded); with more the map
+  // maker waits: labels come late rather than memory growing without bound.
+  std::size_t max_queued_keyframes = 4;
 
   // prior^weight per class, scaled so the largest is 1.
   ClassVotes class_weights() const;
@@ -83,7 +87,7 @@ struct SlamOptions {
   TrackerOptions tracker;
   MapMakerOptions mapmaker;
   SemanticsOptions semantics;
-  MapResetOptions reset;
+  MapResetOptions map_reset;
   // Synchronous mode: map maker work runs inline at each keyframe, so a run
   // is reproducible bit for bit (set by --sync).
   bool synchronous = false;
@@ -101,8 +105,16 @@ struct SlamOptions {
   int max_keyframes_behind = 0;
 };
 
+// Every key is optional (the struct's value is the default) and named as
+// its member; unknown keys and values out of range are errors naming the file
+// and the key. One table per options struct (slam_options.cpp) reads them
+// and writes them back.
 SlamOptions load_slam_options(const std::filesystem::path& path);
 // Reads configs/semantics.yaml's keys over `defaults`.
 SemanticsOptions load_semantics_options(const std::filesystem::path& path, SemanticsOptions defaults = {});
+// The settings as YAML the loaders read back, each key under what it means
+// (`facadeslam config --dump`).
+void write_slam_settings(std::ostream& out, const SlamOptions& options);
+void write_semantics_settings(std::ostream& out, const SemanticsOptions& options);
 
 }  // namespace facadeslam

@@ -68,6 +68,11 @@ SlamOptions with_label_aware_tracking(SlamOptions options) {
 System::System(Camera camera, SlamOptions options)
     : camera_(camera),
       options_(with_label_aware_tracking(std::move(options))),
+      // Bounded hand-offs: a busy map maker gets no keyframe candidates, a
+      // busy worker holds the map maker up. Inline (--sync) each is emptied
+      // every frame by the one thread, which must never wait on itself.
+      queue_(options_.tracker.keyframe_max_queue),
+      new_points_(options_.synchronous ? KeyFramePointsQueue::kUnbounded : options_.semantics.max_queued_keyframes),
       worker_(make_worker(options_.semantics, new_points_, map_)),
       map_maker_(camera_, map_, queue_, options_.mapmaker, worker_ ? &new_points_ : nullptr),
       tracker_(camera_, map_, queue_, options_.tracker),
@@ -163,7 +168,7 @@ FrameReport System::process(Frame frame) {
 bool System::should_reset(std::size_t frame_index) const {
   if (map_loaded_) return false;
   const int lost = tracker_.lost_frames();
-  const MapResetOptions& r = options_.reset;
+  const MapResetOptions& r = options_.map_reset;
   const auto lost_since = static_cast<std::ptrdiff_t>(frame_index) - lost + 1;
   const bool young = lost_since - static_cast<std::ptrdiff_t>(initialised_at_) <= r.young_map_frames;
   if (young && lost >= r.young_map_lost_frames) return true;

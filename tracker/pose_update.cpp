@@ -7,6 +7,7 @@
 
 #include "core/image/image_pyramid.hpp"
 #include "core/util/error.hpp"
+#include "core/util/assert.hpp"
 
 namespace facadeslam {
 namespace {
@@ -141,12 +142,10 @@ Eigen::Matrix<double, 2, 6> pose_measurement_jacobian(const SE3d& T_c_w, const E
 
 PoseUpdateResult update_pose(const SE3d& T_c_w, std::span<const PoseMeasurement> measurements, const Camera& camera,
                              const PoseUpdateOptions& options) {
-  for (const PoseMeasurement& m : measurements)
-    if (!(m.weight >= 0.0 && m.weight <= 1.0))
-      throw Error("update_pose: a measurement's weight is " + std::to_string(m.weight) + ", expected 0..1");
-    else if (m.level < 0 || m.level >= kPyramidLevels)
-      throw Error("update_pose: a measurement's pyramid level is " + std::to_string(m.level) + ", expected 0.." +
-                  std::to_string(kPyramidLevels - 1));
+  for (const PoseMeasurement& m : measurements) {
+    FACADESLAM_ASSERT(m.weight >= 0.0 && m.weight <= 1.0, "a measurement's prior weight is in [0, 1]");
+    FACADESLAM_ASSERT(m.level >= 0 && m.level < kPyramidLevels, "a measurement's level is a pyramid level");
+  }
   PoseUpdateResult result;
   result.T_c_w = T_c_w;
   const std::size_t n = measurements.size();

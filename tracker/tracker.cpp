@@ -106,11 +106,11 @@ std::vector<Tracker::Candidate> Tracker::project_map(const std::vector<PointSnap
   return out;
 }
 
-std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>& points,
-                                                const std::vector<Candidate>& candidates,
-                                                const patch::SearchImage& image, double radius_level0, int max_points,
-                                                int& searched, SearchCounts* counts) const {
-  std::vector<TrackedMeasurement> found;
+std::vector<PointMeasurement> Tracker::search(const std::vector<PointSnapshot>& points,
+                                              const std::vector<Candidate>& candidates, const patch::SearchImage& image,
+                                              double radius_level0, int max_points, int& searched,
+                                              SearchCounts* counts) const {
+  std::vector<PointMeasurement> found;
   found.reserve(
       static_cast<std::size_t>(std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(max_points))));
   searched = 0;
@@ -140,7 +140,7 @@ std::vector<TrackedMeasurement> Tracker::search(const std::vector<PointSnapshot>
 }
 
 std::vector<PoseMeasurement> Tracker::pose_measurements(const std::vector<PointSnapshot>& points,
-                                                        const std::vector<TrackedMeasurement>& found,
+                                                        const std::vector<PointMeasurement>& found,
                                                         int* down_weighted) const {
   // The snapshot's geometry, not the live point's: the map maker may move
   // points while we track, and we must use one consistent copy.
@@ -195,8 +195,8 @@ int Tracker::verify_unreliable(PoseUpdateResult& update, std::vector<PoseMeasure
   return verified;
 }
 
-std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,
-                                                    bool coarse) {
+std::vector<PointMeasurement> Tracker::track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,
+                                                  bool coarse) {
   const Stopwatch snapshot_watch;
   map_.refresh_points_snapshot(points_, points_revision_);
   const std::vector<PointSnapshot>& points = points_;
@@ -205,7 +205,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
   const patch::SearchImage image(*frame.pyramid);
   std::mt19937_64 rng(options_.seed * 0x9E3779B97F4A7C15ULL + frame.index);
   SE3d T_c_w = T_start;
-  double fine_radius = options_.fine_radius;
+  double fine_radius = options_.fine_radius_px;
 
   // Coarse stage: points at the coarse levels, wide radius.
   if (options_.coarse_stage && coarse) {
@@ -213,7 +213,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
     std::vector<Candidate> candidates = project_map(points, T_c_w);
     std::erase_if(candidates, [&](const Candidate& c) { return c.search_level < options_.coarse_min_level; });
     std::shuffle(candidates.begin(), candidates.end(), rng);
-    const auto found = search(points, candidates, image, options_.coarse_radius, options_.coarse_max_points,
+    const auto found = search(points, candidates, image, options_.coarse_radius_px, options_.coarse_max_points,
                               result.coarse_searched, nullptr);
     result.coarse_found = static_cast<int>(found.size());
     result.timings.coarse_ms = t0.elapsed_ms();
@@ -227,7 +227,7 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
       if (update.ok) verify_unreliable(update, measurements, VerifyWhen::always);
       if (update.ok) {
         T_c_w = update.T_c_w;
-        fine_radius = options_.fine_radius_after_coarse;
+        fine_radius = options_.fine_radius_after_coarse_px;
         result.coarse_pose_used = true;
       }
       result.timings.pose_ms += t1.elapsed_ms();
@@ -239,12 +239,12 @@ std::vector<TrackedMeasurement> Tracker::track_from(const SE3d& T_start, const F
   std::vector<Candidate> candidates = project_map(points, T_c_w, &result.points_dropped, &result.fine_counts);
   std::shuffle(candidates.begin(), candidates.end(), rng);
   result.fine_counts.projected = static_cast<int>(candidates.size());
-  std::vector<TrackedMeasurement> found = search(points, candidates, image, fine_radius, options_.fine_max_points,
-                                                 result.fine_searched, &result.fine_counts);
+  std::vector<PointMeasurement> found = search(points, candidates, image, fine_radius, options_.fine_max_points,
+                                               result.fine_searched, &result.fine_counts);
   result.timings.fine_ms = t0.elapsed_ms();
 
   const Stopwatch t1;
-  std::vector<TrackedMeasurement> inliers;
+  std::vector<PointMeasurement> inliers;
   if (static_cast<int>(found.size()) >= 6) {
     auto measurements = pose_measurements(points, found, &result.points_down_weighted);
     auto update = update_pose(T_c_w, measurements, camera_, options_.pose);
@@ -404,7 +404,7 @@ TrackingResult Tracker::track(const Frame& frame) {
   return result;
 }
 
-void Tracker::consider_keyframe(const Frame& frame, TrackingResult& result, std::vector<TrackedMeasurement> inliers) {
+void Tracker::consider_keyframe(const Frame& frame, TrackingResult& result, std::vector<PointMeasurement> inliers) {
   if (const KeyFrameReason reason = wants_keyframe(result, frame.index); reason != KeyFrameReason::none) {
     request_keyframe(frame, result.T_c_w, std::move(inliers), reason);
     result.keyframe_requested = true;
@@ -412,7 +412,7 @@ void Tracker::consider_keyframe(const Frame& frame, TrackingResult& result, std:
 }
 
 Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, std::size_t frame_index) const {
-  if (keyframes_.size() >= options_.keyframe_max_queue) return KeyFrameReason::none;
+  if (keyframes_.full()) return KeyFrameReason::none;  // the map maker is busy
   const std::size_t frames = frame_index - last_keyframe_frame_;
   // A keyframe near the camera (in units of its scene depth) that looks the
   // same way already covers this view. Near keyframes that all look
@@ -470,7 +470,7 @@ Tracker::KeyFrameReason Tracker::wants_keyframe(const TrackingResult& result, st
                                                                           : KeyFrameReason::none;
 }
 
-void Tracker::request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vector<TrackedMeasurement> measurements,
+void Tracker::request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vector<PointMeasurement> measurements,
                                KeyFrameReason reason) {
   KeyFrameCandidate candidate;
   candidate.frame = frame;  // shares the images
@@ -479,7 +479,7 @@ void Tracker::request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vecto
   candidate.turned_on_the_spot = reason == KeyFrameReason::turned;
   last_keyframe_turned_ = candidate.turned_on_the_spot;
   found_at_keyframe_ = static_cast<int>(candidate.measurements.size());
-  keyframes_.push(std::move(candidate));
+  keyframes_.try_push(std::move(candidate));  // room: wants_keyframe asked, and only the map maker takes
   last_keyframe_frame_ = frame.index;
 }
 

@@ -102,32 +102,30 @@ class Tracker {
   // The found points as pose-update measurements (snapshot geometry),
   // unreliable ones with their lower weight (counted in `down_weighted`).
   std::vector<PoseMeasurement> pose_measurements(const std::vector<PointSnapshot>& points,
-                                                 const std::vector<TrackedMeasurement>& found,
-                                                 int* down_weighted) const;
+                                                 const std::vector<PointMeasurement>& found, int* down_weighted) const;
   // Searches up to `max_points` of `candidates` (in order) in the frame's
   // search image and returns the measurements found; `searched` counts the
   // attempts, `counts` (optional) why the others failed.
-  std::vector<TrackedMeasurement> search(const std::vector<PointSnapshot>& points,
-                                         const std::vector<Candidate>& candidates, const patch::SearchImage& image,
-                                         double radius_level0, int max_points, int& searched,
-                                         SearchCounts* counts) const;
+  std::vector<PointMeasurement> search(const std::vector<PointSnapshot>& points,
+                                       const std::vector<Candidate>& candidates, const patch::SearchImage& image,
+                                       double radius_level0, int max_points, int& searched, SearchCounts* counts) const;
   // The coarse (unless `coarse` is false) + fine stages and pose updates
   // from `T_start`; fills `result`.
-  std::vector<TrackedMeasurement> track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,
-                                             bool coarse = true);
+  std::vector<PointMeasurement> track_from(const SE3d& T_start, const Frame& frame, TrackingResult& result,
+                                           bool coarse = true);
   // A frame tracked from one starting pose: its figures and the measurements
   // the pose kept (they go to a keyframe if one is made).
   struct TrackedFrame {
     TrackingResult result;
-    std::vector<TrackedMeasurement> inliers;
+    std::vector<PointMeasurement> inliers;
   };
   // A pose for a lost frame: the small blurry image's, else ORB + PnP's;
   // either only if the normal search from it tracks well.
   std::optional<TrackedFrame> relocalise(const Frame& frame);
   enum class KeyFrameReason { none, moved, turned };
   KeyFrameReason wants_keyframe(const TrackingResult& result, std::size_t frame_index) const;
-  void consider_keyframe(const Frame& frame, TrackingResult& result, std::vector<TrackedMeasurement> inliers);
-  void request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vector<TrackedMeasurement> measurements,
+  void consider_keyframe(const Frame& frame, TrackingResult& result, std::vector<PointMeasurement> inliers);
+  void request_keyframe(const Frame& frame, const SE3d& T_c_w, std::vector<PointMeasurement> measurements,
                         KeyFrameReason reason);
 
   Camera camera_;

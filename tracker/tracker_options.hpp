@@ -32,14 +32,14 @@ struct TrackerOptions {
   int coarse_min_level = 2;  // points searched at this level or above
   int coarse_max_points = 60;
   int coarse_min_found = 10;  // below this the coarse pose is not used
-  double coarse_radius = 30.0;
+  double coarse_radius_px = 30.0;
   // When the fine stage fails from the coarse stage's pose, run it again
   // from the motion model's prediction and keep the better (Tracker::track).
   bool retry_from_prediction = true;
   // Fine stage: up to this many points over all levels, tight radius.
   int fine_max_points = 1000;
-  double fine_radius = 8.0;  // without a coarse stage
-  double fine_radius_after_coarse = 5.0;
+  double fine_radius_px = 8.0;  // without a coarse stage
+  double fine_radius_after_coarse_px = 5.0;
 
   // Motion model: constant velocity, decayed (PTAM).
   double velocity_decay = 0.9;
@@ -82,7 +82,9 @@ struct TrackerOptions {
   double keyframe_min_angle_deg = 15.0;        // between optical axes
   int keyframe_min_frames_turning = 10;        // turning is fast: the view leaves the map in a second
   double keyframe_distance_after_turn = 0.25;  // x keyframe_min_distance for the first keyframe after a turn
-  std::size_t keyframe_max_queue = 3;          // map maker busy: wait
+  // The keyframe queue's capacity (the System builds it): candidates the
+  // map maker has not taken yet; while it is full the tracker asks for none.
+  std::size_t keyframe_max_queue = 3;
   // ... and, whatever the distance, when the points found fall below this
   // share of the most found in a frame since the last keyframe (the view
   // leaves the map: forward motion at 10 Hz), at most every this many frames.

@@ -2,6 +2,7 @@
 
 #include "core/image/small_blurry_image.hpp"
 #include "core/util/error.hpp"
+#include "core/util/assert.hpp"
 
 namespace facadeslam {
 
@@ -14,7 +15,7 @@ KeyFrame::KeyFrame(Id id, const Frame& frame, const SE3d& T_c_w, Measurements me
       colour_(frame.colour),
       small_blurred_(frame.pyramid ? make_small_blurry_image(*frame.pyramid) : cv::Mat()),
       measurements_(std::move(measurements)) {
-  if (!pyramid_) throw Error("KeyFrame: frame " + std::to_string(frame.index) + " has no pyramid");
+  FACADESLAM_ASSERT(pyramid_, "a keyframe is made of a frame with its pyramid");
 }
 
 }  // namespace facadeslam

@@ -20,20 +20,12 @@
 #include "core/image/image_pyramid.hpp"
 #include "core/lie/se3.hpp"
 #include "core/map/map_point.hpp"
+#include "core/map/measurement.hpp"
 
 namespace facadeslam {
 
 // The optical axis (the camera's +z) in world coordinates: the third row of R_c_w.
 inline Eigen::Vector3d optical_axis_w(const SE3d& T_c_w) { return T_c_w.rotation_matrix().row(2).transpose(); }
-
-// Where a map point was seen in a keyframe.
-struct Measurement {
-  int level = 0;                // pyramid level it was found at
-  Eigen::Vector2d pixel{0, 0};  // level-0 pixel coordinates
-  bool from_source = false;     // this keyframe is the point's source
-};
-
-using Measurements = std::map<MapPoint::Id, Measurement>;
 
 class KeyFrame {
  public:

@@ -10,21 +10,15 @@
 
 #include "core/image/frame.hpp"
 #include "core/lie/se3.hpp"
-#include "core/map/map_point.hpp"
+#include "core/map/measurement.hpp"
 #include "core/util/blocking_queue.hpp"
 
 namespace facadeslam {
 
-struct TrackedMeasurement {
-  std::shared_ptr<MapPoint> point;
-  int level = 0;                // pyramid level it was found at
-  Eigen::Vector2d pixel{0, 0};  // level-0 pixels
-};
-
 struct KeyFrameCandidate {
   Frame frame;
   SE3d T_c_w;
-  std::vector<TrackedMeasurement> measurements;
+  std::vector<PointMeasurement> measurements;  // the tracker's inliers in the frame
   // Requested because the camera turned near an existing keyframe rather than
   // moved away from every keyframe: the map maker gives it depth-prior
   // points for the part of the view no keyframe has a baseline to.

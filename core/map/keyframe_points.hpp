@@ -8,20 +8,16 @@
 #include <vector>
 
 #include "core/map/keyframe.hpp"
+#include "core/map/measurement.hpp"
 #include "core/map/map_point.hpp"
 #include "core/util/blocking_queue.hpp"
 
 namespace facadeslam {
 
-struct PointInKeyFrame {
-  std::shared_ptr<MapPoint> point;
-  Eigen::Vector2d pixel{0, 0};  // level-0 pixel of its measurement in the keyframe
-};
-
 struct KeyFramePoints {
   // Shared: the worker's images stay valid even if the map drops the keyframe.
   std::shared_ptr<const KeyFrame> keyframe;
-  std::vector<PointInKeyFrame> points;
+  std::vector<PointMeasurement> points;  // where the keyframe saw each
 };
 
 using KeyFramePointsQueue = BlockingQueue<KeyFramePoints>;

@@ -14,6 +14,7 @@
 #include "core/map/binary_stream.hpp"
 #include "core/util/atomic_write.hpp"
 #include "core/util/error.hpp"
+#include "core/util/assert.hpp"
 
 namespace facadeslam {
 namespace {
@@ -243,7 +244,7 @@ void save_map(const std::filesystem::path& path, const Map& map, const Camera& c
 }
 
 Camera load_map(const std::filesystem::path& path, Map& map, const Camera* expected_camera) {
-  if (map.keyframe_count() || map.point_count()) throw Error("load_map: the map to load into is not empty");
+  FACADESLAM_ASSERT(!map.keyframe_count() && !map.point_count(), "a map is loaded into an empty one");
   std::ifstream file(path, std::ios::binary);
   if (!file) fail_file(path, "cannot open the map file");
   std::string data((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());

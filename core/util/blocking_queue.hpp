@@ -1,10 +1,15 @@
 #pragma once
 // The hand-off between threads (tracker -> map maker, and map maker ->
-// semantic worker): an unbounded FIFO. Producers push and never wait; a
-// consumer waits on a condition variable (never a sleep) until an item
-// arrives, the queue is closed, or its own wake-up condition holds.
+// semantic worker): a FIFO of at most `capacity` items, which is the
+// back-pressure between them. A producer that must not wait (the tracker)
+// asks try_push and drops what does not fit; one that may (the map maker)
+// push()es and waits for room. A consumer waits on a condition variable
+// (never a sleep) until an item arrives, the queue is closed, or its own
+// wake-up condition holds.
 #include <condition_variable>
+#include <cstddef>
 #include <deque>
+#include <limits>
 #include <mutex>
 #include <optional>
 
@@ -13,19 +18,43 @@ namespace facadeslam {
 template <class T>
 class BlockingQueue {
  public:
-  void push(T item) {
+  static constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
+
+  explicit BlockingQueue(std::size_t capacity = kUnbounded) : capacity_(capacity == 0 ? 1 : capacity) {}
+
+  // Waits while the queue is full, then adds the item. False (the item
+  // dropped) when the queue is, or gets, closed while full: nobody will take it.
+  bool push(T item) {
     {
-      std::lock_guard lock(mutex_);
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return items_.size() < capacity_ || closed_; });
+      if (items_.size() >= capacity_) return false;
       items_.push_back(std::move(item));
     }
     changed_.notify_all();
+    return true;
+  }
+
+  // Adds the item if there is room; false (the item not taken) when full.
+  bool try_push(T&& item) {
+    {
+      std::lock_guard lock(mutex_);
+      if (items_.size() >= capacity_) return false;
+      items_.push_back(std::move(item));
+    }
+    changed_.notify_all();
+    return true;
   }
 
   std::optional<T> try_pop() {
-    std::lock_guard lock(mutex_);
-    if (items_.empty()) return std::nullopt;
-    T item = std::move(items_.front());
-    items_.pop_front();
+    std::optional<T> item;
+    {
+      std::lock_guard lock(mutex_);
+      if (items_.empty()) return std::nullopt;
+      item.emplace(std::move(items_.front()));
+      items_.pop_front();
+    }
+    changed_.notify_all();  // a producer may be waiting for room
     return item;
   }
 
@@ -45,6 +74,8 @@ class BlockingQueue {
     return items_.size();
   }
   bool empty() const { return size() == 0; }
+  bool full() const { return size() >= capacity_; }
+  std::size_t capacity() const { return capacity_; }
 
   // No more items will come: waiters wake; items already queued can still be
   // popped.
@@ -64,8 +95,11 @@ class BlockingQueue {
   // what was queued belongs to the old map, and stopping the consumer must
   // not first work through it).
   void clear() {
-    std::lock_guard lock(mutex_);
-    items_.clear();
+    {
+      std::lock_guard lock(mutex_);
+      items_.clear();
+    }
+    changed_.notify_all();
   }
 
   // Empties the queue and opens it again. Only once the consumer thread has
@@ -79,6 +113,7 @@ class BlockingQueue {
  private:
   mutable std::mutex mutex_;
   std::condition_variable changed_;
+  const std::size_t capacity_;
   std::deque<T> items_;
   bool closed_ = false;
 };

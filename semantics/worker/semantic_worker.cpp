@@ -91,15 +91,15 @@ void SemanticWorker::label(const KeyFramePoints& job) {
   const Classifier* classifier = grey ? (grey_ ? &*grey_ : nullptr) : &colour_;
   const bool describable = !colour.empty() && colour.type() == CV_8UC3 && classifier != nullptr;
   std::size_t skipped = 0;
-  for (const auto& [point, px] : job.points) {
+  for (const PointMeasurement& seen : job.points) {
     // A point the map maker has dropped since the hand-off gets no votes.
-    if (!describable || point->is_bad()) {
+    if (!describable || seen.point->is_bad()) {
       ++skipped;
       continue;
     }
-    keypoints.emplace_back(static_cast<float>(std::clamp(px.x(), 0.0, colour.cols - 1.0)),
-                           static_cast<float>(std::clamp(px.y(), 0.0, colour.rows - 1.0)));
-    points.push_back(point);
+    keypoints.emplace_back(static_cast<float>(std::clamp(seen.pixel.x(), 0.0, colour.cols - 1.0)),
+                           static_cast<float>(std::clamp(seen.pixel.y(), 0.0, colour.rows - 1.0)));
+    points.push_back(seen.point);
   }
   if (!points.empty()) {
     // The moving-region grid's cells go through the descriptor with the

@@ -8,6 +8,7 @@
 #include <opencv2/video/tracking.hpp>
 
 #include "core/util/error.hpp"
+#include "core/util/assert.hpp"
 
 namespace facadeslam {
 
@@ -78,7 +79,7 @@ void CornerTracks::reset(const cv::Mat& grey, const std::vector<Corner>& corners
 }
 
 std::size_t CornerTracks::track(const cv::Mat& grey) {
-  if (!has_reference()) throw Error("corner tracks: track() called before reset()");
+  FACADESLAM_ASSERT(has_reference(), "corner tracks are reset() on a reference before track()");
   check_image(grey, "the tracked image");
   if (grey.size() != image_size_)
     throw Error("corner tracks: the tracked image is " + std::to_string(grey.cols) + "x" + std::to_string(grey.rows) +

@@ -38,6 +38,7 @@ class SemanticWorkerTest : public ::testing::Test {
       if (out.points.size() == count) break;
       out.points.push_back(
           {std::make_shared<MapPoint>(out.points.size(), PatchSource{0, pyramid, 0, {c.x, c.y}}, PointGeometry{}),
+           0,
            {c.x, c.y}});
     }
     return out;
@@ -73,7 +74,7 @@ TEST_F(SemanticWorkerTest, LabelsEveryPointWithTheForestsVoteAtItsPatch) {
   // The same descriptor and forest, by hand.
   auto descriptor = make_point_descriptor(model_.descriptor, model_.genome);
   std::vector<cv::Point2f> keypoints;
-  for (const auto& [p, px] : points.points)
+  for (const auto& [p, level, px] : points.points)
     keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
   cv::Mat shares;
   const std::vector<int> expected = model_.forest.predict(descriptor->compute(colour_, keypoints), shares);
@@ -102,7 +103,7 @@ TEST_F(SemanticWorkerTest, AddsTheVotesOfTheShrunkKeyframeWithAContextScale) {
   cv::Mat half;
   cv::resize(colour_, half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
   std::vector<cv::Point2f> keypoints, halved;
-  for (const auto& [p, px] : points.points) {
+  for (const auto& [p, level, px] : points.points) {
     keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
     halved.emplace_back(static_cast<float>(px.x()) * 0.5f, static_cast<float>(px.y()) * 0.5f);
   }
@@ -151,7 +152,7 @@ TEST_F(SemanticWorkerTest, MovingRegionsLeaveTheVotesAndGiveEachPointOneRegionVi
 
   std::size_t in_region = 0;
   for (std::size_t i = 0; i < b.points.size(); ++i) {
-    const auto& [point, px] = b.points[i];
+    const auto& [point, level, px] = b.points[i];
     EXPECT_EQ(point->votes(), a.points[i].point->votes()) << "point " << i;
     EXPECT_EQ(a.points[i].point->region_views().views, 0u);
     const bool expected = regions.contains({static_cast<float>(px.x()), static_cast<float>(px.y())});
@@ -168,7 +169,7 @@ TEST_F(SemanticWorkerTest, MovingRegionsLeaveTheVotesAndGiveEachPointOneRegionVi
   no_moving.use_moving_regions(options, ClassSet());
   const KeyFramePoints c = job(true, 20);
   no_moving.label(c);
-  for (const auto& [point, px] : c.points) EXPECT_EQ(point->region_views().views, 0u);
+  for (const auto& [point, level, px] : c.points) EXPECT_EQ(point->region_views().views, 0u);
 }
 
 TEST_F(SemanticWorkerTest, FusesTheVotesOfEveryKeyframeThatMeasuresAPoint) {
@@ -180,13 +181,13 @@ TEST_F(SemanticWorkerTest, FusesTheVotesOfEveryKeyframeThatMeasuresAPoint) {
   const std::vector<ClassVotes> alone = [&] {
     std::vector<ClassVotes> votes;
     worker.label(second);
-    for (const auto& [p, px] : second.points) votes.push_back(p->votes());
+    for (const auto& [p, level, px] : second.points) votes.push_back(p->votes());
     return votes;
   }();
-  for (const auto& [p, px] : first.points) p->set_votes({});
+  for (const auto& [p, level, px] : first.points) p->set_votes({});
   worker.label(first);
   std::vector<ClassVotes> first_only;
-  for (const auto& [p, px] : first.points) first_only.push_back(p->votes());
+  for (const auto& [p, level, px] : first.points) first_only.push_back(p->votes());
   worker.label(second);
 
   std::size_t changed = 0;
@@ -210,12 +211,12 @@ TEST_F(SemanticWorkerTest, SkipsBadPointsAndKeyframesWithoutColour) {
   SemanticWorker worker(model_, queue);
   const KeyFramePoints grey = job(false, 10);
   worker.label(grey);
-  for (const auto& [p, px] : grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
+  for (const auto& [p, level, px] : grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
 
   Map map;
   const KeyFramePoints coloured = job(true, 10);
   std::vector<std::shared_ptr<MapPoint>> points;
-  for (const auto& [p, px] : coloured.points) points.push_back(p);
+  for (const auto& [p, level, px] : coloured.points) points.push_back(p);
   map.add({}, points);
   map.update([&](MapEditor& edit) { edit.mark_bad(*points[3]); });
   worker.label(coloured);
@@ -235,7 +236,7 @@ TEST_F(SemanticWorkerTest, LeavesTheKeyframesOfAGreySequenceUnlabelledWithoutAGr
   KeyFramePointsQueue queue;
   SemanticWorker worker(model_, queue);
   worker.label(job_of_grey);
-  for (const auto& [p, px] : job_of_grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
+  for (const auto& [p, level, px] : job_of_grey.points) EXPECT_EQ(p->label().label, kUnlabelled);
   EXPECT_EQ(worker.stats().grey_keyframes, 1u);
   EXPECT_EQ(worker.stats().observations_labelled, 0u);
   EXPECT_FALSE(worker.stats().grey_model);
@@ -257,7 +258,7 @@ TEST_F(SemanticWorkerTest, LabelsGreyKeyframesWithTheGreyModel) {
   const auto expected_labels = [](const ForestModel& model, const cv::Mat& image, const KeyFramePoints& points) {
     auto descriptor = make_point_descriptor(model.descriptor, model.genome);
     std::vector<cv::Point2f> keypoints;
-    for (const auto& [p, px] : points.points)
+    for (const auto& [p, level, px] : points.points)
       keypoints.emplace_back(static_cast<float>(px.x()), static_cast<float>(px.y()));
     cv::Mat shares;
     return model.forest.predict(descriptor->compute(image, keypoints), shares);
@@ -288,7 +289,7 @@ TEST_F(SemanticWorkerTest, TheThreadLabelsWhatIsQueuedBeforeItStops) {
   }
   worker.stop();
   for (const auto& j : jobs)
-    for (const auto& [p, px] : j.points) EXPECT_NE(p->label().label, kUnlabelled);
+    for (const auto& [p, level, px] : j.points) EXPECT_NE(p->label().label, kUnlabelled);
   EXPECT_EQ(worker.stats().keyframes, 3u);
 }
 

@@ -67,7 +67,7 @@ TEST(StreetRegression, StreetWalkLosesNoFrameAndAteWithinOnePercent) {
 // lost after initialisation, ATE <= 0.5 % of the path. Run as `replay` runs
 // it, with the shipped model's labels: its swaying trees are weighed down by
 // the tracker, its parked and oncoming cars left out of tracking and bundle
-// adjustment (SemanticsOptions::moving_classes). 0.046 % (online poses);
+// adjustment (LabelPolicy::moving). 0.046 % (online poses);
 // without labels 0.019 %; with the tracker weighing cars down to 0.1 like
 // the trees and bundle adjustment taking them at full weight (the earlier
 // policy) 1.90 % (tracker seeds 2, 3: 1.01, 0.37 %).

@@ -209,7 +209,7 @@ TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
     int reset_at = -1;
     for (const FrameReport& f : log.frames)
       if (f.map_reset) reset_at = static_cast<int>(f.index);
-    EXPECT_EQ(reset_at, black_from + options.reset.young_map_lost_frames - 1);
+    EXPECT_EQ(reset_at, black_from + options.map_reset.young_map_lost_frames - 1);
     // Initialised again on the real images, tracked from then on.
     ASSERT_TRUE(system.initialised());
     const FrameReport& last = log.frames.back();
@@ -220,7 +220,7 @@ TEST(System, ResetsAYoungMapLostForLongAndInitialisesAgain) {
     const TrajectorySegment& first = system.earlier_segments().front();
     EXPECT_GE(first.final.size(), 3u);
     EXPECT_EQ(first.online.size(), first.final.size());
-    EXPECT_LT(first.final.back().timestamp, scene.timestamp(black_from + options.reset.young_map_lost_frames));
+    EXPECT_LT(first.final.back().timestamp, scene.timestamp(black_from + options.map_reset.young_map_lost_frames));
     // The current map's trajectories: only its frames, all after the black ones.
     const Trajectory online = system.online_trajectory(), final = system.final_trajectory();
     ASSERT_GE(final.size(), 3u);

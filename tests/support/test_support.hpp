@@ -33,6 +33,8 @@ class TempDir {
 };
 
 void write_text(const std::filesystem::path& path, const std::string& text);
+// The whole file; throws std::runtime_error when it cannot be read.
+std::string read_text(const std::filesystem::path& path);
 
 // The message of the facadeslam::Error that `body` throws; a test failure
 // (and "(no error)") when it throws none.

@@ -59,7 +59,7 @@ class PlaneTracking : public ::testing::Test {
   RenderedPlane plane_ = test::make_plane(2);
   Camera camera_ = test::test_camera();
   Map map_;
-  KeyFrameQueue queue_;
+  KeyFrameQueue queue_{TrackerOptions{}.keyframe_max_queue};
   std::shared_ptr<KeyFrame> keyframe_;
 };
 

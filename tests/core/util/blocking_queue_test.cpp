@@ -77,5 +77,41 @@ TEST(BlockingQueue, ClearDropsTheQueueAndReopenFollowsTheJoin) {
   EXPECT_EQ(queue.try_pop(), std::optional<int>(7));
 }
 
+// The back-pressure: a full queue refuses try_push and holds push() until
+// the consumer takes an item; every item arrives, in order.
+TEST(BlockingQueue, ABoundedQueueHoldsItsProducerBack) {
+  BlockingQueue<int> queue(2);
+  EXPECT_TRUE(queue.try_push(0));
+  EXPECT_TRUE(queue.try_push(1));
+  EXPECT_TRUE(queue.full());
+  EXPECT_FALSE(queue.try_push(2));
+  std::vector<int> received;
+  std::thread consumer([&] { received = consume(queue); });
+  for (int i = 2; i < 50; ++i) EXPECT_TRUE(queue.push(i));
+  queue.close();
+  consumer.join();
+  ASSERT_EQ(received.size(), 50u);
+  for (int i = 0; i < 50; ++i) EXPECT_EQ(received[static_cast<std::size_t>(i)], i);
+}
+
+// A producer waiting for room is woken by close (nobody will take the item:
+// it is dropped) and by clear (a map reset: room again).
+TEST(BlockingQueue, CloseAndClearWakeAWaitingProducer) {
+  BlockingQueue<int> queue(1);
+  queue.push(0);
+  bool pushed = true;
+  std::thread producer([&] { pushed = queue.push(1); });
+  queue.close();
+  producer.join();
+  EXPECT_FALSE(pushed);
+  queue.reopen();
+  queue.push(0);
+  std::thread second([&] { pushed = queue.push(2); });
+  queue.clear();
+  second.join();
+  EXPECT_TRUE(pushed);
+  EXPECT_EQ(queue.try_pop(), std::optional<int>(2));
+}
+
 }  // namespace
 }  // namespace facadeslam

@@ -165,10 +165,11 @@ TEST(SpreadStrongestCorners, EqualScoresAreOrderedByPosition) {
   EXPECT_EQ(spread_strongest_corners(corners, 3, 100), (std::vector<int>{2, 1, 0}));
 }
 
-TEST(CornerTracks, TrackBeforeResetThrows) {
+TEST(CornerTracksDeathTest, TrackBeforeResetIsAnInternalError) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
   CornerTracks tracks;
   const cv::Mat grey(480, 640, CV_8UC1, cv::Scalar(0));
-  EXPECT_NE(error_of([&] { tracks.track(grey); }).find("before reset"), std::string::npos);
+  EXPECT_DEATH(tracks.track(grey), "internal error.*reset\\(\\) on a reference before track\\(\\)");
 }
 
 TEST(CornerTracks, WrongImagesThrow) {
