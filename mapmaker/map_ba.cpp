@@ -37,6 +37,7 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
   // before the selection, so that every fixed keyframe it picks shares a
   // measured point with the free ones.
   std::vector<KeyFrameCentre> centres;
+  centres.reserve(keyframes.size());
   std::vector<ObservationRef> refs;
   // Poses and measurements: written only by the map maker, which runs this.
   for (const auto& kf : keyframes) centres.push_back({kf->id(), kf->centre_w()});

@@ -28,7 +28,7 @@ std::string list(const std::vector<std::size_t>& v) {
 // Whole sequence: initialises, then no frame lost, ATE within `max_percent`
 // of the path length.
 void expect_tracks_whole_street(const std::string& name, double max_percent,
-                                SlamOptions options = test::synchronous_options()) {
+                                const SlamOptions& options = test::synchronous_options()) {
   test::SceneFrames scene(test::scene_file(name));
   System system(scene.camera(), options);
   test::SlamRunLog log;

@@ -59,6 +59,7 @@ TEST(System, InitialisesOnAShortPanAndTracksTheFramesAfter) {
 TEST(System, SameInputGivesTheSameResultBitForBit) {
   test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 35);
   std::vector<cv::Mat> frames;
+  frames.reserve(static_cast<std::size_t>(scene.size()));
   for (int i = 0; i < scene.size(); ++i) frames.push_back(scene.render(i));
   const auto run = [&] {
     System system(scene.camera(), test::synchronous_options());
@@ -153,6 +154,7 @@ TEST(System, SemanticWorkerLabelsTheNewPoints) {
   // Rendered once for both runs (OSMesa's JIT is heavy under the sanitizers).
   test::SceneFrames scene(test::source_dir() / "configs" / "scenes" / "demo.yaml", 45);
   std::vector<cv::Mat> frames;
+  frames.reserve(static_cast<std::size_t>(scene.size()));
   for (int i = 0; i < scene.size(); ++i) frames.push_back(scene.render(i));
   for (const bool synchronous : {true, false}) {
     SlamOptions options = test::synchronous_options();

@@ -144,13 +144,14 @@ TEST(CornerTracks, KeepsAtMostMaxCornersSpreadOverTheImage) {
   // Spread: every quarter of the image holds some of them.
   int quarter[4] = {0, 0, 0, 0};
   for (const Eigen::Vector2d& p : tracks.reference_pixels())
-    ++quarter[(p.x() < frame0.cols / 2 ? 0 : 1) + (p.y() < frame0.rows / 2 ? 0 : 2)];
+    ++quarter[(p.x() < frame0.cols / 2.0 ? 0 : 1) + (p.y() < frame0.rows / 2.0 ? 0 : 2)];
   for (int q : quarter) EXPECT_GT(q, 10);
 }
 
 TEST(SpreadStrongestCorners, TakesEveryCellsBestBeforeAnyCellsSecond) {
   // Cell (0,0) holds five strong corners, cell (1,0) two weak ones.
   std::vector<Corner> corners;
+  corners.reserve(7);
   for (int i = 0; i < 5; ++i) corners.push_back({2 + i, 3, 100.f - i});
   corners.push_back({45, 3, 5.f});
   corners.push_back({46, 9, 4.f});
