@@ -92,6 +92,14 @@ SemanticsOptions semantics_options(const ReplayOptions& o) {
   return semantics;
 }
 
+// A synthetic sequence's true depth (synth writes depth.txt beside rgb.txt):
+// the render's occlusion is scored against it.
+fs::path synthetic_depth_list(const fs::path& sequence) {
+  const fs::path folder = is_existing_folder(sequence) ? sequence : sequence.parent_path();
+  const fs::path list = folder / "depth.txt";
+  return path_exists(list) ? list : fs::path();
+}
+
 int run_replay(ReplayOptions o) {
   if (o.sequence.empty()) {
     o.sequence = shipped_file(kDemoSequence);
@@ -138,7 +146,8 @@ int run_replay(ReplayOptions o) {
       ar_render = std::make_unique<ReplayRender>(
           ReplayRenderOptions{
               staged_render ? staged_render->path() : staged.staged(o.render), o.render_every, video_fps,
-              "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string()},
+              "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string(),
+              synthetic_depth_list(o.sequence)},
           camera);
     } catch (const Error& e) {
       throw CLI::ValidationError("--render", e.what());

@@ -4,10 +4,14 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <numbers>
 #include <string>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <spdlog/spdlog.h>
 
@@ -22,6 +26,9 @@
 #include "render/ar/ar_view.hpp"
 #include "render/ar/contact_sheet.hpp"
 #include "render/ar/follow_camera.hpp"
+#include "render/ar/map_occlusion.hpp"
+#include "render/ar/object_placement.hpp"
+#include "render/ar/occlusion_score.hpp"
 #include "render/ar/plane_finder.hpp"
 #include "render/ar/video_writer.hpp"
 #include "render/ar/virtual_object.hpp"
@@ -32,6 +39,8 @@ namespace facadeslam::apps {
 // Named, so that a unity build cannot clash with other files' helpers.
 namespace replay_render_detail {
 namespace {
+
+namespace fs = std::filesystem;
 
 // PTAM's colours for the pyramid level a point's patch comes from (points
 // without a class yet): red, yellow, green, blue from fine to coarse.
@@ -61,6 +70,38 @@ PointColour point_colour(const PointSnapshot& point) {
 
 int even(int n) { return n + (n & 1); }
 
+bool is_class(const SemanticLabel& label, std::string_view name) {
+  return label.label != kUnlabelled && semantic_class(label.label).name == name;
+}
+
+// What a point's label lets it do to the object (render/ar/map_occlusion.hpp).
+render::ar::OccluderKind occluder_kind(const SemanticLabel& label) {
+  using render::ar::OccluderKind;
+  if (is_class(label, "sky") || is_class(label, "road") || is_class(label, "pavement")) return OccluderKind::none;
+  if (is_class(label, "building") || is_class(label, "window") || is_class(label, "door")) return OccluderKind::surface;
+  return OccluderKind::sparse;  // vegetation, car, various, and points not labelled yet
+}
+
+// depth.txt beside a synthetic sequence: "timestamp depth/NNNNNN.png" per
+// frame (sequences/synth/sequence_writer.hpp); empty when there is none.
+std::vector<std::pair<double, fs::path>> read_depth_list(const fs::path& list) {
+  std::vector<std::pair<double, fs::path>> out;
+  if (list.empty()) return out;
+  std::ifstream in(list);
+  if (!in) throw Error(list.string() + ": cannot open the depth list");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    double timestamp = 0;
+    std::string file;
+    if (!(fields >> timestamp >> file))
+      throw Error(list.string() + ": expected 'timestamp depth/NNNNNN.png', got '" + line + "'");
+    out.emplace_back(timestamp, list.parent_path() / file);
+  }
+  return out;
+}
+
 }  // namespace
 }  // namespace replay_render_detail
 
@@ -79,7 +120,16 @@ struct ReplayRender::Impl {
   std::unordered_map<MapPoint::Id, std::uint32_t> found_before;
   std::vector<Eigen::Vector3d> trajectory_w;
   std::optional<render::ar::VirtualObject> object;
-  Json plane;  // null until the object is placed
+  Json plane;                               // null until the object is placed
+  std::optional<render::ar::Plane> ground;  // the object stands on it
+  double ground_band = 0.0;
+  // The map's point spacing for the occluders' splats, refreshed now and then.
+  double spacing = 0.0;
+  std::size_t spacing_points = 0;
+  // Scoring against the true depth (synthetic sequences only).
+  std::vector<std::pair<double, fs::path>> truth_depth;
+  render::ar::OcclusionScore occlusion;
+  std::size_t frames_with_object = 0, frames_object_visible = 0;
   std::size_t rendered = 0, without_overlay = 0;
   std::vector<double> render_ms;
 
@@ -91,7 +141,8 @@ struct ReplayRender::Impl {
         frames_dir(options.dir / "frames"),
         video_path(options.dir / "augmented.mp4"),
         sheet_path(options.dir / "contact_sheet.png"),
-        sheet(options.title + ": augmented view | map view", 12, 3, std::min(480, frame_size.width)) {
+        sheet(options.title + ": augmented view | map view", 12, 3, std::min(480, frame_size.width)),
+        truth_depth(replay_render_detail::read_depth_list(options.truth_depth_list)) {
     video = std::make_unique<render::ar::Mp4Writer>(video_path, options.video_fps, frame_size);
     writer = std::make_unique<RenderFrameWriter>(*video, sheet);
   }
@@ -103,22 +154,27 @@ struct ReplayRender::Impl {
     if (object || points.size() < replay_render_detail::kMinPointsForPlane ||
         keyframes.size() < replay_render_detail::kMinKeyframesForPlane)
       return;
-    std::vector<Eigen::Vector3d> points_w;
-    points_w.reserve(points.size());
-    for (const PointSnapshot& p : points) points_w.push_back(p.geometry.p_w);
-    const auto fit = render::ar::find_dominant_plane(points_w);
-    if (!fit) return;
-    // Seen from the newest keyframe: the object appears near the middle of
-    // the view it is placed in.
-    object = render::ar::place_on_plane(*fit, points_w, keyframes.back().T_c_w.inverse().isometry());
-    if (!object) return;
+    std::vector<render::ar::PlacementPoint> placement_points;
+    placement_points.reserve(points.size());
+    for (const PointSnapshot& p : points) {
+      const SemanticLabel label = p.point->label();
+      placement_points.push_back({p.geometry.p_w, replay_render_detail::is_class(label, "road") ||
+                                                      replay_render_detail::is_class(label, "pavement")});
+    }
     std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+    keyframes_T_c_w.reserve(keyframes.size());
     for (const KeyFrameSnapshot& kf : keyframes) keyframes_T_c_w.push_back(kf.T_c_w.isometry());
-    const render::ViewAxes axes = render::view_axes_from_cameras(keyframes_T_c_w);
-    // Ground when the plane's normal is within 45 degrees of the map's up.
-    const bool ground = std::abs(fit->plane.normal_w.dot(axes.up_w)) > std::cos(std::numbers::pi / 4);
+    // Seen from the newest keyframe: the object appears in the view it is placed in.
+    const auto placement = render::ar::place_object(placement_points, keyframes_T_c_w);
+    if (!placement) return;
+    object = placement->object;
+    if (placement->on_ground) ground = placement->fit.plane;
+    ground_band = placement->ground_band;
+    const render::ar::PlaneFit* fit = &placement->fit;
+    const bool ground = placement->on_ground;
     plane = Json::object();
     plane["kind"] = ground ? "ground" : "facade";
+    plane["why"] = placement->reason;
     plane["inliers"] = fit->inliers.size();
     plane["points"] = points.size();
     plane["placed_at_frame"] = frame_number;
@@ -130,13 +186,71 @@ struct ReplayRender::Impl {
                  ground ? "ground" : "facade", fit->inliers.size(), points.size(), frame_number);
   }
 
+  // The map's occluders as the camera sees them, in the object's geometry.
+  cv::Mat occluders(const std::vector<PointSnapshot>& points, const Eigen::Isometry3d& T_c_w) {
+    std::vector<render::ar::OccluderPoint> occluder_points;
+    occluder_points.reserve(points.size());
+    for (const PointSnapshot& p : points) {
+      const bool on_ground = ground && std::abs(ground->signed_distance(p.geometry.p_w)) <= ground_band;
+      occluder_points.push_back({p.geometry.p_w, on_ground ? render::ar::OccluderKind::none
+                                                           : replay_render_detail::occluder_kind(p.point->label())});
+    }
+    // The spacing changes slowly with the map: measured again when it has
+    // grown by a tenth (a stable splat size, so no flicker from it either).
+    if (spacing == 0.0 || points.size() > spacing_points + spacing_points / 10) {
+      spacing = render::ar::point_spacing(occluder_points);
+      spacing_points = points.size();
+    }
+    return render::ar::occluder_depth(occluder_points, T_c_w, ar_view.object_intrinsics(), spacing);
+  }
+
+  // The frame's occlusion against the true depth: the map's scale from the
+  // points the tracker found (the true depth at their pixels over theirs).
+  void score_occlusion(double timestamp, const render::ar::ArFrameContent& content, const Eigen::Isometry3d& T_c_w) {
+    ++frames_with_object;
+    const cv::Mat object_z = render::ar::object_depth(*object, camera, T_c_w);
+    const cv::Mat& occluder_z = content.occluder_depth;
+    std::size_t on_object = 0, hidden = 0;
+    for (int y = 0; y < object_z.rows; ++y)
+      for (int x = 0; x < object_z.cols; ++x) {
+        const float z = object_z.at<float>(y, x);
+        if (!std::isfinite(z)) continue;
+        ++on_object;
+        if (occluder_z.size() == object_z.size() && occluder_z.at<float>(y, x) < 0.99f * z) ++hidden;
+      }
+    if (on_object > hidden) ++frames_object_visible;
+    if (truth_depth.empty() || occluder_z.size() != object_z.size()) return;
+    const auto nearest = std::min_element(truth_depth.begin(), truth_depth.end(), [&](const auto& a, const auto& b) {
+      return std::abs(a.first - timestamp) < std::abs(b.first - timestamp);
+    });
+    if (std::abs(nearest->first - timestamp) > 1e-3) return;
+    const cv::Mat depth_mm = cv::imread(nearest->second.string(), cv::IMREAD_ANYDEPTH);
+    if (depth_mm.type() != CV_16UC1 || depth_mm.size() != object_z.size())
+      throw Error(nearest->second.string() + ": expected a 16-bit depth PNG of the camera's size");
+    std::vector<double> ratios;
+    for (const render::ar::ArPoint& p : content.points) {
+      const Eigen::Vector3d p_c = T_c_w * p.p_w;
+      if (p_c.z() <= 0) continue;
+      const Eigen::Vector2d px = camera.project(p_c);
+      const int u = static_cast<int>(std::lround(px.x())), v = static_cast<int>(std::lround(px.y()));
+      if (u < 0 || v < 0 || u >= depth_mm.cols || v >= depth_mm.rows) continue;
+      const std::uint16_t mm = depth_mm.at<std::uint16_t>(v, u);
+      if (mm > 0) ratios.push_back(mm * 1e-3 / p_c.z());
+    }
+    if (ratios.size() < 10) return;
+    const double metres_per_unit = median(std::move(ratios));
+    cv::Mat truth_z;
+    depth_mm.convertTo(truth_z, CV_32F, 1e-3 / metres_per_unit);
+    occlusion.add_frame(object_z, occluder_z, truth_z);
+  }
+
   cv::Mat draw_map_view(const std::vector<PointSnapshot>& points, const std::vector<KeyFrameSnapshot>& keyframes,
                         const std::optional<Eigen::Isometry3d>& T_w_c) {
     render::MapViewContent content;
     content.points_w.reserve(points.size());
     content.colours_bgr.reserve(points.size());
     for (const PointSnapshot& p : points) {
-      content.points_w.push_back(p.geometry.p_w.cast<float>());
+      content.points_w.emplace_back(p.geometry.p_w.cast<float>());
       content.colours_bgr.push_back(replay_render_detail::class_bgr(semantic_class(p.point->label().label)));
     }
     std::vector<double> depths;
@@ -200,13 +314,14 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
     // The map was given up: its world frame and scale go with it, so the
     // object and the trajectory so far are placed again in the next map.
     m.object.reset();
+    m.ground.reset();
     m.trajectory_w.clear();
     m.plane = Json();
   }
   std::optional<Eigen::Isometry3d> T_w_c;
   if (report.has_pose) {
     T_w_c = report.T_c_w.inverse().isometry();
-    m.trajectory_w.push_back(T_w_c->translation());
+    m.trajectory_w.emplace_back(T_w_c->translation());
   }
   if (!wants(frame_number)) return;
   const Stopwatch stopwatch;
@@ -218,6 +333,7 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
   content.image = image;
   content.T_w_c = T_w_c;
   content.object = m.object;
+  if (T_w_c && m.object) content.occluder_depth = m.occluders(points, T_w_c->inverse());
   std::map<std::string, cv::Vec3b> legend;
   if (T_w_c) {
     for (const PointSnapshot& p : points) {
@@ -231,6 +347,7 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
   for (const auto& [text, bgr] : legend) content.legend.push_back({text, bgr, false});
   render::ar::ArFrameStats stats;
   cv::Mat ar = m.ar_view.render(content, &stats);
+  if (T_w_c && m.object) m.score_occlusion(report.timestamp, content, T_w_c->inverse());
   const bool overlay = stats.object_drawn || stats.points_drawn > 0;
   if (!overlay) ++m.without_overlay;
   const std::string status = std::string(to_string(report.status)) + (T_w_c ? "" : " (no overlay)");
@@ -272,6 +389,17 @@ Json ReplayRender::finish(double replay_fps) {
   out["frame_size"] = std::to_string(m.frame_size.width) + "x" + std::to_string(m.frame_size.height);
   out["gl_renderer"] = m.ar_view.gl_renderer();
   out["plane"] = m.plane;
+  // Occlusion by the map: frames the object was drawn in, those where part
+  // of it showed; with a synthetic sequence's true depth, how well the map
+  // hid it (render/ar/occlusion_score.hpp).
+  out["frames_with_object"] = m.frames_with_object;
+  out["frames_object_visible"] = m.frames_object_visible;
+  if (m.occlusion.frames() > 0) {
+    out["occlusion_iou"] = m.occlusion.iou() ? Json(*m.occlusion.iou()) : Json();
+    out["occlusion_frames_scored"] = m.occlusion.frames();
+    out["occlusion_flicker"] = m.occlusion.flicker_render();
+    out["occlusion_flicker_truth"] = m.occlusion.flicker_truth();
+  }
   out["render_ms"] = timing_summary(m.render_ms);
   out["replay_fps"] = replay_fps;
   return out;

@@ -31,6 +31,9 @@ struct ReplayRenderOptions {
   std::size_t every = 1;  // render frames 0, N, 2N, ...
   double video_fps = 30.0;
   std::string title = "facadeslam replay";  // the contact sheet's, before "augmented view | map view"
+  // depth.txt of a synthetic sequence: the object's occlusion is scored
+  // against its true depth (report: render.occlusion_iou). Empty: not scored.
+  std::filesystem::path truth_depth_list;
 };
 
 class ReplayRender {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -27,10 +28,12 @@ layout(location = 1) in vec3 normal_c;
 layout(location = 2) in vec2 face_uv;
 out vec3 v_normal;
 out vec2 v_uv;
+out float v_z;
 void main() {
   gl_Position = clip_from_camera(p_c);
   v_normal = normal_c;
   v_uv = face_uv;
+  v_z = p_c.z;
 }
 )";
 
@@ -39,11 +42,29 @@ void main() {
 const char* const kObjectFragmentShader = R"(#version 450 core
 in vec3 v_normal;
 in vec2 v_uv;
+in float v_z;
 uniform vec4 light_c;   // xyz: unit direction towards the light, camera frame; w: ambient share
 uniform vec4 body_rgb;
 uniform vec4 checker_rgb;
 uniform float squares;
+uniform sampler2D occluders;  // the map's nearest occluder z per pixel (+inf: none)
+uniform int use_occluders;
 layout(location = 0) out vec4 out_colour;
+// The share of a 3x3 neighbourhood whose occluder lies behind the fragment:
+// 1 in the open, 0 behind a surface, in between along an occluder's edge
+// (a soft edge of three pixels rather than a jagged one).
+float visibility() {
+  if (use_occluders == 0) return 1.0;
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  ivec2 last = textureSize(occluders, 0) - ivec2(1);
+  float open = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      float z = texelFetch(occluders, clamp(px + ivec2(dx, dy), ivec2(0), last), 0).r;
+      open += z >= 0.99 * v_z ? 1.0 : 0.0;
+    }
+  return open / 9.0;
+}
 // The checker box-filtered over the pixel's footprint (its extent in face
 // coordinates, from the derivatives): anti-aliased edges without moving the
 // squares' corners, since the filter is symmetric.
@@ -55,7 +76,9 @@ float checker_share(vec2 p) {
 void main() {
   vec3 albedo = mix(body_rgb.rgb, checker_rgb.rgb, checker_share(v_uv * squares));
   float diffuse = max(dot(normalize(v_normal), light_c.xyz), 0.0);
-  out_colour = vec4(albedo * (light_c.w + (1.0 - light_c.w) * diffuse), 1.0);
+  // Premultiplied by the visibility, as the composite pass expects.
+  float a = visibility();
+  out_colour = vec4(a * albedo * (light_c.w + (1.0 - light_c.w) * diffuse), a);
 }
 )";
 
@@ -145,12 +168,12 @@ struct ArView::Impl {
   std::unique_ptr<DistortionResampler> resampler;  // distorted cameras only
   PinholeIntrinsics object_camera;                 // the object layer's pinhole
   GLuint object_vao = 0, object_vbo = 0, point_vao = 0, point_vbo = 0, empty_vao = 0;
-  GLuint background_texture = 0, lookup_texture = 0;
+  GLuint background_texture = 0, lookup_texture = 0, occluder_texture = 0;
   GLuint object_fbo = 0, object_colour = 0, object_depth = 0;
   GLuint output_fbo = 0, output_colour = 0;
   cv::Mat background_bgr;  // reused upload buffer for grey images
 
-  Impl(const Camera& c, ArViewStyle s)
+  Impl(const Camera& c, const ArViewStyle& s)
       : camera(c),
         style(s),
         gl(context.gl()),
@@ -175,10 +198,14 @@ struct ArView::Impl {
     gl.BindBuffer(GL_ARRAY_BUFFER, object_vbo);
     for (GLuint attribute = 0; attribute < 3; ++attribute) gl.EnableVertexAttribArray(attribute);
     gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ObjectGpuVertex), nullptr);
-    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(ObjectGpuVertex),
-                           reinterpret_cast<const void*>(offsetof(ObjectGpuVertex, nx)));
-    gl.VertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(ObjectGpuVertex),
-                           reinterpret_cast<const void*>(offsetof(ObjectGpuVertex, u)));
+    gl.VertexAttribPointer(
+        1, 3, GL_FLOAT, GL_FALSE, sizeof(ObjectGpuVertex),
+        reinterpret_cast<const void*>(  // NOLINT(performance-no-int-to-ptr): GL takes offsets as pointers
+            offsetof(ObjectGpuVertex, nx)));
+    gl.VertexAttribPointer(
+        2, 2, GL_FLOAT, GL_FALSE, sizeof(ObjectGpuVertex),
+        reinterpret_cast<const void*>(  // NOLINT(performance-no-int-to-ptr): GL takes offsets as pointers
+            offsetof(ObjectGpuVertex, u)));
     gl.GenVertexArrays(1, &point_vao);
     gl.GenBuffers(1, &point_vbo);
     gl.BindVertexArray(point_vao);
@@ -186,8 +213,10 @@ struct ArView::Impl {
     gl.EnableVertexAttribArray(0);
     gl.EnableVertexAttribArray(1);
     gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(PointGpuVertex), nullptr);
-    gl.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointGpuVertex),
-                           reinterpret_cast<const void*>(offsetof(PointGpuVertex, r)));
+    gl.VertexAttribPointer(
+        1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointGpuVertex),
+        reinterpret_cast<const void*>(  // NOLINT(performance-no-int-to-ptr): GL takes offsets as pointers
+            offsetof(PointGpuVertex, r)));
     gl.GenVertexArrays(1, &empty_vao);
     gl.BindVertexArray(0);
 
@@ -204,6 +233,13 @@ struct ArView::Impl {
       const float zero[2] = {0.f, 0.f};
       gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, 1, 1, 0, GL_RG, GL_FLOAT, zero);
     }
+
+    occluder_texture = make_texture(GL_NEAREST);
+    const float nothing = std::numeric_limits<float>::infinity();
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, 1, 1, 0, GL_RED, GL_FLOAT, &nothing);
+    gl.UseProgram(object_program.id());
+    gl.Uniform1i(object_program.uniform("occluders"), 3);
+    gl.UseProgram(0);
 
     object_colour = make_texture(GL_LINEAR);
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, object_camera.width, object_camera.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -252,8 +288,8 @@ struct ArView::Impl {
     gl.DeleteFramebuffers(1, &output_fbo);
     gl.DeleteRenderbuffers(1, &object_depth);
     gl.DeleteRenderbuffers(1, &output_colour);
-    const GLuint textures[] = {background_texture, lookup_texture, object_colour};
-    gl.DeleteTextures(3, textures);
+    const GLuint textures[] = {background_texture, lookup_texture, object_colour, occluder_texture};
+    gl.DeleteTextures(4, textures);
     gl.DeleteBuffers(1, &object_vbo);
     gl.DeleteBuffers(1, &point_vbo);
     gl.DeleteVertexArrays(1, &object_vao);
@@ -285,7 +321,7 @@ struct ArView::Impl {
   }
 
   // The object into its layer (transparent black where it is not).
-  void draw_object(const VirtualObject& object, const Eigen::Isometry3d& T_c_w) {
+  void draw_object(const VirtualObject& object, const Eigen::Isometry3d& T_c_w, const cv::Mat& occluders) {
     using ar_view_detail::ObjectGpuVertex;
     std::vector<ObjectGpuVertex> vertices;
     for (const ObjectVertex& v : object_triangles(object)) {
@@ -315,6 +351,18 @@ struct ArView::Impl {
     set_colour("body_rgb", style.object_bgr);
     set_colour("checker_rgb", style.checker_bgr);
     gl.Uniform1f(object_program.uniform("squares"), static_cast<float>(object.checker_squares));
+    const bool occluded = !occluders.empty();
+    if (occluded) {
+      if (occluders.cols != object_camera.width || occluders.rows != object_camera.height ||
+          occluders.type() != CV_32FC1 || !occluders.isContinuous())
+        throw Error("render: the occluder depth must be a continuous 32-bit float image of " +
+                    std::to_string(object_camera.width) + "x" + std::to_string(object_camera.height) + " pixels");
+      gl.ActiveTexture(GL_TEXTURE3);
+      gl.BindTexture(GL_TEXTURE_2D, occluder_texture);
+      gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, occluders.cols, occluders.rows, 0, GL_RED, GL_FLOAT, occluders.data);
+      gl.ActiveTexture(GL_TEXTURE0);
+    }
+    gl.Uniform1i(object_program.uniform("use_occluders"), occluded ? 1 : 0);
     gl.BindVertexArray(object_vao);
     gl.BindBuffer(GL_ARRAY_BUFFER, object_vbo);
     gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(ObjectGpuVertex)), vertices.data(),
@@ -380,7 +428,7 @@ struct ArView::Impl {
     const bool with_object = content.T_w_c && content.object;
     std::optional<Eigen::Isometry3d> T_c_w;
     if (content.T_w_c) T_c_w = content.T_w_c->inverse();
-    if (with_object) draw_object(*content.object, *T_c_w);
+    if (with_object) draw_object(*content.object, *T_c_w, content.occluder_depth);
     stats.object_drawn = with_object;
 
     gl.BindFramebuffer(GL_FRAMEBUFFER, output_fbo);
@@ -410,7 +458,7 @@ struct ArView::Impl {
   }
 };
 
-ArView::ArView(const Camera& camera, ArViewStyle style) : impl_(std::make_unique<Impl>(camera, style)) {}
+ArView::ArView(const Camera& camera, const ArViewStyle& style) : impl_(std::make_unique<Impl>(camera, style)) {}
 ArView::~ArView() {
   try {
     impl_->context.make_current();
@@ -424,6 +472,7 @@ cv::Mat ArView::render(const ArFrameContent& content, ArFrameStats* stats) {
 }
 
 const Camera& ArView::camera() const { return impl_->camera; }
+const PinholeIntrinsics& ArView::object_intrinsics() const { return impl_->object_camera; }
 std::string ArView::gl_renderer() const { return impl_->context.renderer(); }
 
 }  // namespace facadeslam::render::ar

@@ -25,6 +25,7 @@
 #include "core/camera/camera.hpp"
 #include "render/ar/virtual_object.hpp"
 #include "render/map_view.hpp"
+#include "render/projection.hpp"
 
 namespace facadeslam::render::ar {
 
@@ -39,6 +40,9 @@ struct ArFrameContent {
   std::optional<Eigen::Isometry3d> T_w_c;
   std::vector<ArPoint> points;
   std::optional<VirtualObject> object;
+  // The map's occluders (render/ar/map_occlusion.hpp) in object_intrinsics()'
+  // geometry: the object is hidden where they are nearer. Empty: nothing hides it.
+  cv::Mat occluder_depth;
   std::vector<LegendEntry> legend;  // empty: none
 };
 
@@ -64,7 +68,7 @@ class ArView {
  public:
   // Creates the OSMesa context; Error if OSMesa cannot give OpenGL 4.5 core
   // or the camera cannot be rendered (a field of view of 90 degrees or more).
-  explicit ArView(const Camera& camera, ArViewStyle style = {});
+  explicit ArView(const Camera& camera, const ArViewStyle& style = {});
   ~ArView();
   ArView(const ArView&) = delete;
   ArView& operator=(const ArView&) = delete;
@@ -73,6 +77,9 @@ class ArView {
   cv::Mat render(const ArFrameContent& content, ArFrameStats* stats = nullptr);
 
   const Camera& camera() const;
+  // The pinhole the object is drawn through: the camera's own without
+  // distortion, else the wider virtual pinhole it is resampled from.
+  const PinholeIntrinsics& object_intrinsics() const;
   std::string gl_renderer() const;
 
  private:

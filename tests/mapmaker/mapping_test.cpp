@@ -56,7 +56,7 @@ class PlaneKeyFrames : public ::testing::Test {
   // second view, for bundle adjustment to take out.
   std::vector<std::shared_ptr<MapPoint>> map_off_by_a_pixel() {
     map_.add(epipolar_new_points(map_, camera_, second_, first_, EpipolarSearchOptions{}));
-    const auto points = map_.points();
+    auto points = map_.points();
     map_.update([&](MapEditor& edit) {
       for (const auto& p : points) {
         PointGeometry g = p->geometry();
@@ -282,13 +282,13 @@ TEST_F(LeftOutPoints, PointsTheTrackerRarelyFindsAreCulled) {
   EXPECT_EQ(culled.front(), points.front());
 }
 
-TEST_F(PlaneKeyFrames, BundleAdjustmentRejectsAWeightOutsideZeroToOneNamingThePoint) {
+// The label policy gives the weights: one outside [0, 1] is a bug (FACADESLAM_ASSERT).
+TEST_F(PlaneKeyFrames, BundleAdjustmentWithAWeightOutsideZeroToOneIsAnInternalError) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
   map_off_by_a_pixel();
   for (const double bad : {-0.5, 1.5, std::nan("")})
-    EXPECT_THAT(
-        [&] { adjust_map(map_, camera_, BundleAdjuster(), std::nullopt, {}, [&](const MapPoint&) { return bad; }); },
-        ::testing::ThrowsMessage<Error>(
-            ::testing::AllOf(::testing::HasSubstr("point "), ::testing::HasSubstr("expected in [0, 1]"))))
+    EXPECT_DEATH(adjust_map(map_, camera_, BundleAdjuster(), std::nullopt, {}, [&](const MapPoint&) { return bad; }),
+                 "internal error.*bundle adjustment weight is in \\[0, 1\\]")
         << "weight " << bad;
 }
 

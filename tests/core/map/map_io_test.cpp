@@ -267,7 +267,11 @@ TEST_F(MapIo, MapFromAnotherCameraIsRejected) {
   EXPECT_THAT(error_of([&] { load_map(file, loaded, &bigger); }), HasSubstr("320x240"));
 }
 
-TEST_F(MapIo, LoadingIntoANonEmptyMapIsRefused) { EXPECT_THROW(load_map(file, map), Error); }
+// The caller's bug, not the user's: FACADESLAM_ASSERT.
+TEST_F(MapIo, LoadingIntoANonEmptyMapIsAnInternalError) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_DEATH(load_map(file, map), "internal error.*loaded into an empty one");
+}
 
 }  // namespace
 }  // namespace facadeslam

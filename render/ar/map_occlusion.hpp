@@ -1,0 +1,46 @@
+#pragma once
+// What of the map stands in front of the virtual object, as a depth image
+// (the camera-frame z of the nearest occluding map surface per pixel) that
+// the AR view tests the object's fragments against.
+//
+// Labels decide what may occlude: a facade (building, window, door) is a
+// surface, so its points' splats are grown and their gaps closed; a tree, a
+// car or an unlabelled point is sparse structure, drawn as splats only; the
+// sky is at infinity and the ground (road, pavement) is what the object
+// stands on: neither occludes. A splat's radius is a share of the map's
+// point spacing seen at the point's depth, so that sparse maps still cover
+// their surfaces and dense ones keep their detail.
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "render/projection.hpp"
+
+namespace facadeslam::render::ar {
+
+enum class OccluderKind : std::uint8_t { none, surface, sparse };
+
+struct OccluderPoint {
+  Eigen::Vector3d p_w;
+  OccluderKind kind = OccluderKind::sparse;
+};
+
+struct OcclusionOptions {
+  double surface_radius = 1.5;  // x the point spacing: splats that touch their neighbours
+  double sparse_radius = 0.6;   // x the point spacing
+  double max_radius_px = 24.0;  // a point right in front of the camera covers no more than this
+  int surface_close_px = 5;     // gaps of a facade's splats up to this wide are closed
+};
+
+// The median distance from a point to its nearest neighbour (over at most
+// 400 evenly spread points): the map's point spacing. 0 for fewer than 2.
+double point_spacing(const std::vector<OccluderPoint>& points);
+
+// CV_32FC1 of the intrinsics' size: the nearest occluder's z per pixel,
+// +infinity where nothing occludes.
+cv::Mat occluder_depth(const std::vector<OccluderPoint>& points, const Eigen::Isometry3d& T_c_w,
+                       const PinholeIntrinsics& intrinsics, double spacing, const OcclusionOptions& options = {});
+
+}  // namespace facadeslam::render::ar

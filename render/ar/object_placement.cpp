@@ -1,0 +1,109 @@
+#include "render/ar/object_placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/map_view_framing.hpp"
+
+namespace facadeslam::render::ar {
+namespace {
+
+constexpr double kMaxGroundTiltDeg = 30.0;
+constexpr std::size_t kMinCandidates = 8;
+constexpr std::size_t kMinGroundPoints = 12;
+constexpr double kBandShare = 0.15;    // inliers within this share of the camera height of the ground
+constexpr double kLowestShare = 0.05;  // "the lowest points": this share of all
+
+// A level plane (normal: the cameras' up) at the median height of
+// `candidates` (indices into points), with the points within a band around
+// it as inliers: the ground the cameras stand above. Nothing when it is not
+// below the cameras or too few points lie on it.
+std::optional<PlaneFit> level_ground(const std::vector<PlacementPoint>& points,
+                                     const std::vector<std::size_t>& candidates, const Eigen::Vector3d& up_w,
+                                     double camera_height) {
+  if (candidates.size() < kMinCandidates) return std::nullopt;
+  std::vector<double> heights;
+  heights.reserve(candidates.size());
+  for (const std::size_t i : candidates) heights.push_back(up_w.dot(points[i].p_w));
+  std::nth_element(heights.begin(), heights.begin() + static_cast<std::ptrdiff_t>(heights.size() / 2), heights.end());
+  const double ground = heights[heights.size() / 2];
+  const double below = camera_height - ground;
+  if (below <= 0.0) return std::nullopt;
+  PlaneFit fit;
+  fit.plane.normal_w = up_w;
+  fit.plane.offset = -ground;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (std::abs(fit.plane.signed_distance(points[i].p_w)) <= kBandShare * below) fit.inliers.push_back(i);
+  if (fit.inliers.size() < kMinGroundPoints) return std::nullopt;
+  return fit;
+}
+
+// The fit's inliers in the nearer half (by depth) of those in front of the
+// reference camera: the object then stands ahead, not at the far end.
+PlaneFit nearer_half(const PlaneFit& fit, const std::vector<Eigen::Vector3d>& points_w,
+                     const Eigen::Isometry3d& T_ref_w) {
+  std::vector<std::pair<double, std::size_t>> by_depth;
+  for (const std::size_t i : fit.inliers) {
+    const double z = (T_ref_w * points_w[i]).z();
+    if (z > 0.0) by_depth.emplace_back(z, i);
+  }
+  if (by_depth.size() < 10) return fit;
+  std::sort(by_depth.begin(), by_depth.end());
+  PlaneFit near = fit;
+  near.inliers.clear();
+  for (std::size_t k = 0; k < by_depth.size() / 2; ++k) near.inliers.push_back(by_depth[k].second);
+  std::sort(near.inliers.begin(), near.inliers.end());
+  return near;
+}
+
+}  // namespace
+
+std::optional<ObjectPlacement> place_object(const std::vector<PlacementPoint>& points,
+                                            const std::vector<Eigen::Isometry3d>& keyframes_T_c_w,
+                                            const PlacementOptions& options) {
+  if (keyframes_T_c_w.empty()) return std::nullopt;
+  const Eigen::Vector3d up_w = view_axes_from_cameras(keyframes_T_c_w).up_w;
+  const Eigen::Isometry3d T_w_ref = keyframes_T_c_w.back().inverse();
+  const Eigen::Vector3d camera_w = T_w_ref.translation();
+  std::vector<Eigen::Vector3d> points_w;
+  points_w.reserve(points.size());
+  for (const PlacementPoint& p : points) points_w.push_back(p.p_w);
+
+  std::optional<ObjectPlacement> placement;
+  const auto try_plane = [&](const std::optional<PlaneFit>& fit, bool ground, const std::string& reason) {
+    if (placement || !fit) return;
+    const PlaneFit used = ground ? nearer_half(*fit, points_w, T_w_ref.inverse()) : *fit;
+    if (auto object = place_on_plane(used, points_w, T_w_ref, options))
+      placement = ObjectPlacement{*object, *fit, ground, 0.0, reason};
+  };
+
+  std::vector<std::size_t> labelled;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].labelled_ground) labelled.push_back(i);
+  double camera_height = 0.0;
+  for (const Eigen::Isometry3d& T_c_w : keyframes_T_c_w) camera_height += up_w.dot(T_c_w.inverse().translation());
+  camera_height /= static_cast<double>(keyframes_T_c_w.size());
+  try_plane(level_ground(points, labelled, up_w, camera_height), true, "points labelled road or pavement");
+
+  // The lowest points of the map.
+  std::vector<std::pair<double, std::size_t>> by_height;
+  for (std::size_t i = 0; i < points.size(); ++i) by_height.emplace_back(up_w.dot(points[i].p_w), i);
+  std::sort(by_height.begin(), by_height.end());
+  std::vector<std::size_t> lowest;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(kLowestShare * static_cast<double>(by_height.size())); ++k)
+    lowest.push_back(by_height[k].second);
+  try_plane(level_ground(points, lowest, up_w, camera_height), true, "the lowest points, below the cameras");
+
+  try_plane(find_dominant_plane(points_w), false, "no ground plane in the map: its dominant plane");
+  if (placement) {
+    // The dominant plane may be level below the cameras after all.
+    const double cos_tilt = std::abs(placement->fit.plane.normal_w.dot(up_w));
+    placement->on_ground = cos_tilt >= std::cos(kMaxGroundTiltDeg * std::numbers::pi / 180.0);
+    if (placement->on_ground)
+      placement->ground_band = kBandShare * std::abs(placement->fit.plane.signed_distance(camera_w));
+  }
+  return placement;
+}
+
+}  // namespace facadeslam::render::ar

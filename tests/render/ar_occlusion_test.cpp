@@ -1,0 +1,109 @@
+// Occlusion of the AR object by the map (render/ar/map_occlusion.hpp), its
+// score against the true depth (occlusion_score.hpp) and where the object
+// stands (object_placement.hpp).
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/camera/camera.hpp"
+#include "render/ar/map_occlusion.hpp"
+#include "render/ar/object_placement.hpp"
+#include "render/ar/occlusion_score.hpp"
+#include "tests/render/render_test_scenes.hpp"
+
+namespace facadeslam {
+namespace {
+
+using render::ar::OccluderKind;
+using render::ar::OccluderPoint;
+
+const Camera kCamera(640, 480, PinholeRadTan{.fx = 500, .fy = 500, .cx = 319.5, .cy = 239.5});
+const render::PinholeIntrinsics kPinhole{640, 480, 500, 500, 319.5, 239.5};
+
+// A 2 x 2 wall of points 0.05 apart, 4 in front of the camera (z forward).
+std::vector<OccluderPoint> wall(OccluderKind kind, double z = 4.0) {
+  std::vector<OccluderPoint> points;
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 40; ++j) points.push_back({{-1.0 + 0.05 * i, -1.0 + 0.05 * j, z}, kind});
+  return points;
+}
+
+TEST(MapOcclusion, AFacadesPointsCloseIntoASurfaceAndTheSkyNeverOccludes) {
+  const auto facade = wall(OccluderKind::surface);
+  const double spacing = render::ar::point_spacing(facade);
+  EXPECT_NEAR(spacing, 0.05, 1e-9);
+  const cv::Mat depth = render::ar::occluder_depth(facade, Eigen::Isometry3d::Identity(), kPinhole, spacing);
+  // The wall spans 250 pixels around the centre: every pixel inside is covered at z = 4.
+  int covered = 0;
+  for (int y = 140; y < 340; ++y)
+    for (int x = 220; x < 420; ++x) covered += depth.at<float>(y, x) == 4.0f;
+  EXPECT_EQ(covered, 200 * 200);
+  EXPECT_TRUE(std::isinf(depth.at<float>(10, 10)));
+  const cv::Mat sky =
+      render::ar::occluder_depth(wall(OccluderKind::none), Eigen::Isometry3d::Identity(), kPinhole, spacing);
+  EXPECT_EQ(cv::countNonZero(sky < std::numeric_limits<float>::infinity()), 0);
+}
+
+TEST(MapOcclusion, SparsePointsCoverLessThanASurface) {
+  const auto tree = wall(OccluderKind::sparse);
+  const double spacing = render::ar::point_spacing(tree);
+  const cv::Mat depth = render::ar::occluder_depth(tree, Eigen::Isometry3d::Identity(), kPinhole, spacing);
+  const int covered = cv::countNonZero(depth(cv::Rect(220, 140, 200, 200)) < 5.f);
+  EXPECT_GT(covered, 200 * 200 / 3);
+  EXPECT_LT(covered, 200 * 200);
+}
+
+// Half the object behind a wall: the render hiding exactly the truth's
+// pixels scores 1, hiding nothing scores 0, and a steady scene does not flicker.
+TEST(OcclusionScore, IsTheOverlapOfWhatTheRenderAndTheTruthHide) {
+  render::ar::VirtualObject object;
+  object.size = 1.0;
+  object.T_w_o.translation() = Eigen::Vector3d(0, 0, 6);  // the object's z axis along the camera's
+  const cv::Mat object_z = render::ar::object_depth(object, kCamera, Eigen::Isometry3d::Identity());
+  ASSERT_GT(cv::countNonZero(object_z < 100.f), 1000);
+  EXPECT_NEAR(object_z.at<float>(240, 320), 6.0, 1e-4);  // its bottom face, facing the camera
+  cv::Mat truth(object_z.size(), CV_32FC1, cv::Scalar(std::numeric_limits<float>::infinity()));
+  truth(cv::Rect(0, 0, 320, 480)).setTo(3.0f);  // a wall over the left half
+  render::ar::OcclusionScore exact, none;
+  const cv::Mat nothing(object_z.size(), CV_32FC1, cv::Scalar(std::numeric_limits<float>::infinity()));
+  for (int frame = 0; frame < 3; ++frame) {
+    exact.add_frame(object_z, truth, truth);
+    none.add_frame(object_z, nothing, truth);
+  }
+  EXPECT_DOUBLE_EQ(*exact.iou(), 1.0);
+  EXPECT_DOUBLE_EQ(*none.iou(), 0.0);
+  EXPECT_EQ(exact.frames_visible(), 3u);
+  EXPECT_DOUBLE_EQ(exact.flicker_render(), 0.0);
+}
+
+// A street: ground points below level cameras and a facade to the side,
+// larger than the ground: the object stands on the ground all the same, in
+// front of the camera, and the ground points are its band.
+TEST(ObjectPlacement, PrefersTheGroundToALargerFacade) {
+  std::vector<render::ar::PlacementPoint> points;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 10; ++j)
+      points.push_back({{-2.0 + 0.2 * j, 0.0, 1.0 + 0.5 * i}, false});  // y down: ground at 0
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 20; ++j) points.push_back({{3.0, -0.2 * j, 1.0 + 0.25 * i}, false});  // facade at x = 3
+  std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+  for (int k = 0; k < 3; ++k) {
+    Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
+    T_w_c.translation() = Eigen::Vector3d(0.0, -1.5, -0.5 * k);  // 1.5 above the ground (y down), upright
+    keyframes_T_c_w.push_back(T_w_c.inverse());
+  }
+  const auto placement = render::ar::place_object(points, keyframes_T_c_w);
+  ASSERT_TRUE(placement.has_value());
+  EXPECT_TRUE(placement->on_ground);
+  EXPECT_EQ(placement->reason, "the lowest points, below the cameras");
+  const Eigen::Vector3d base = placement->object.T_w_o.translation();
+  EXPECT_NEAR(base.y(), 0.0, 1e-6);
+  EXPECT_GT((keyframes_T_c_w.back() * base).z(), 0.0) << "in front of the reference camera";
+  EXPECT_NEAR(placement->object.T_w_o.linear().col(2).dot(Eigen::Vector3d(0, -1, 0)), 1.0, 1e-6) << "upright";
+  EXPECT_GT(placement->ground_band, 0.0);
+}
+
+}  // namespace
+}  // namespace facadeslam
