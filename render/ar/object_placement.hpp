@@ -7,9 +7,9 @@
 // The ground, in order of evidence: the points labelled road or pavement,
 // else the lowest points below the cameras; either way a plane whose normal
 // is within 30 degrees of the cameras' up (the keyframes are upright) with
-// the cameras above it. The anchor is among the nearer half of the plane's
-// points in front of the reference camera, so that the object stands a few
-// metres ahead rather than at the end of the street.
+// the cameras above it. The anchor is among the plane's points from the
+// median to the 80th percentile of depth in front of the reference camera,
+// so that the object stands ahead rather than at its feet or the street's end.
 #include <optional>
 #include <string>
 #include <vector>
