@@ -5,8 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <map>
 #include <numbers>
 #include <string>
@@ -33,6 +31,7 @@
 #include "render/ar/video_writer.hpp"
 #include "render/ar/virtual_object.hpp"
 #include "render/map_view.hpp"
+#include "sequences/list_file.hpp"
 #include "render/map_view_framing.hpp"
 
 namespace facadeslam::apps {
@@ -87,17 +86,9 @@ render::ar::OccluderKind occluder_kind(const SemanticLabel& label) {
 std::vector<std::pair<double, fs::path>> read_depth_list(const fs::path& list) {
   std::vector<std::pair<double, fs::path>> out;
   if (list.empty()) return out;
-  std::ifstream in(list);
-  if (!in) throw Error(list.string() + ": cannot open the depth list");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    double timestamp = 0;
-    std::string file;
-    if (!(fields >> timestamp >> file))
-      throw Error(list.string() + ": expected 'timestamp depth/NNNNNN.png', got '" + line + "'");
-    out.emplace_back(timestamp, list.parent_path() / file);
+  for (const ListLine& line : read_list_file(list, "a depth list ('timestamp depth/NNNNNN.png' per line)")) {
+    if (line.fields.size() != 2) fail_line(list, line.number, "expected 'timestamp depth/NNNNNN.png'");
+    out.emplace_back(parse_timestamp(line.fields[0], list, line.number), list.parent_path() / line.fields[1]);
   }
   return out;
 }
@@ -210,15 +201,7 @@ struct ReplayRender::Impl {
     ++frames_with_object;
     const cv::Mat object_z = render::ar::object_depth(*object, camera, T_c_w);
     const cv::Mat& occluder_z = content.occluder_depth;
-    std::size_t on_object = 0, hidden = 0;
-    for (int y = 0; y < object_z.rows; ++y)
-      for (int x = 0; x < object_z.cols; ++x) {
-        const float z = object_z.at<float>(y, x);
-        if (!std::isfinite(z)) continue;
-        ++on_object;
-        if (occluder_z.size() == object_z.size() && occluder_z.at<float>(y, x) < 0.99f * z) ++hidden;
-      }
-    if (on_object > hidden) ++frames_object_visible;
+    if (render::ar::leaves_object_visible(object_z, occluder_z)) ++frames_object_visible;
     if (truth_depth.empty() || occluder_z.size() != object_z.size()) return;
     const auto nearest = std::min_element(truth_depth.begin(), truth_depth.end(), [&](const auto& a, const auto& b) {
       return std::abs(a.first - timestamp) < std::abs(b.first - timestamp);

@@ -51,29 +51,6 @@ class SettingsTable {
     return *this;
   }
 
-  // One of `choices` (its YAML name, its value) held in `member`, an enum.
-  template <class E>
-  SettingsTable& add_choice(const std::string& key, E Options::*member, std::vector<std::pair<std::string, E>> choices,
-                            std::string doc) {
-    entries_.push_back({[key, member, choices](const ConfigNode& node, Options& options) {
-                          if (!node.has(key)) return;
-                          const std::string name = node.get_string(key);
-                          for (const auto& [choice, value] : choices)
-                            if (choice == name) {
-                              options.*member = value;
-                              return;
-                            }
-                          std::string expected = "one of";
-                          for (const auto& choice : choices) expected += " '" + choice.first + "'";
-                          node.fail(key, expected, name);
-                        },
-                        [key, member, choices, doc = std::move(doc)](SettingsWriter& out, const Options& options) {
-                          for (const auto& [choice, value] : choices)
-                            if (value == options.*member) out.value(key, choice, doc);
-                        }});
-    return *this;
-  }
-
   // A nested options struct, its settings one level down under `key`.
   template <class Sub>
   SettingsTable& add(const std::string& key, Sub Options::*member, SettingsTable<Sub> table, std::string doc = {}) {

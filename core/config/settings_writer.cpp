@@ -70,6 +70,4 @@ void SettingsWriter::open(const std::string& key, const std::string& doc) {
 
 void SettingsWriter::close() { --depth_; }
 
-void SettingsWriter::comment(const std::string& text) { write_doc(text); }
-
 }  // namespace facadeslam

@@ -17,8 +17,6 @@ class SettingsWriter {
   // A nested mapping: the keys written until close() are indented under `key`.
   void open(const std::string& key, const std::string& doc);
   void close();
-  // A comment line of its own (a file's heading), at the current indent.
-  void comment(const std::string& text);
 
   // YAML scalars: numbers in the shortest form that reads back exactly,
   // true/false, strings quoted when YAML would read them otherwise.

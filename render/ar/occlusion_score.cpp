@@ -66,6 +66,17 @@ cv::Mat object_depth(const VirtualObject& object, const Camera& camera, const Ei
   return depth;
 }
 
+bool leaves_object_visible(const cv::Mat& object_z, const cv::Mat& occluder_z) {
+  const bool occluded = occluder_z.size() == object_z.size();
+  for (int y = 0; y < object_z.rows; ++y) {
+    const float* o = object_z.ptr<float>(y);
+    const float* r = occluded ? occluder_z.ptr<float>(y) : nullptr;
+    for (int x = 0; x < object_z.cols; ++x)
+      if (std::isfinite(o[x]) && !(r && nearer(r[x], o[x]))) return true;
+  }
+  return false;
+}
+
 void OcclusionScore::add_frame(const cv::Mat& object_z, const cv::Mat& occluder_z, const cv::Mat& truth_z) {
   std::size_t object = 0, render_hidden = 0, truth_hidden = 0, both = 0;
   for (int y = 0; y < object_z.rows; ++y) {

@@ -22,6 +22,10 @@ namespace facadeslam::render::ar {
 // through the camera model), +infinity off the object; CV_32FC1.
 cv::Mat object_depth(const VirtualObject& object, const Camera& camera, const Eigen::Isometry3d& T_c_w);
 
+// Whether some pixel of the object (its z, +infinity off it) is left
+// uncovered by `occluder_z` (empty: nothing occludes).
+bool leaves_object_visible(const cv::Mat& object_z, const cv::Mat& occluder_z);
+
 class OcclusionScore {
  public:
   // CV_32FC1 of one size: the object's z, the occluders' z the render used,
