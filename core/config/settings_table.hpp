@@ -32,6 +32,7 @@ class SettingsTable {
     static_assert(std::is_arithmetic_v<T> || std::is_same_v<T, std::string>, "a number, a flag or a string");
     entries_.push_back({[key, member, range](const ConfigNode& node, Options& options) {
                           T& value = options.*member;
+                          static_cast<void>(range);  // flags and strings have none
                           if constexpr (std::is_same_v<T, bool>) {
                             value = node.get_bool(key, value);
                           } else if constexpr (std::is_same_v<T, std::string>) {
