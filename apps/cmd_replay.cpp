@@ -145,7 +145,7 @@ int run_replay(ReplayOptions o) {
       const double video_fps = std::clamp(30.0 / static_cast<double>(o.render_every), 5.0, 30.0);
       ar_render = std::make_unique<ReplayRender>(
           ReplayRenderOptions{
-              staged_render ? staged_render->path() : staged.staged(o.render), o.render_every, video_fps,
+              staged_render ? staged_render->path() : staged.staged(o.render), o.render, o.render_every, video_fps,
               "facadeslam replay " + (o.sequence.parent_path().filename() / o.sequence.filename()).string(),
               synthetic_depth_list(o.sequence)},
           camera);

@@ -49,6 +49,11 @@ const std::array<cv::Vec3b, 4> kLevelBgr{{{0, 0, 255}, {0, 230, 255}, {0, 200, 0
 // initial keyframes' points, whose plane may be a poor guess.
 constexpr std::size_t kMinPointsForPlane = 80;
 constexpr std::size_t kMinKeyframesForPlane = 3;
+// An object out of the camera's view this many frames running is placed
+// again ahead of the newest keyframe: a camera that walks or drives past it
+// would otherwise leave it behind for the rest of the sequence (street-walk:
+// in view in 28 of 141 rendered frames). Hidden behind the map is in view.
+constexpr std::size_t kReplaceAfterFramesOutOfView = 15;
 
 cv::Vec3b class_bgr(const SemanticClass& c) { return {c.b, c.g, c.r}; }
 
@@ -112,6 +117,11 @@ struct ReplayRender::Impl {
   std::vector<Eigen::Vector3d> trajectory_w;
   std::optional<render::ar::VirtualObject> object;
   Json plane;                               // null until the object is placed
+  // Why there is no object yet: the largest map seen, whether a plane was
+  // looked for in it and not found (said in the report and on the log).
+  std::size_t most_points = 0, most_keyframes = 0, placements = 0;
+  std::optional<std::size_t> last_frame_in_view;
+  bool tracked = false, no_plane_found = false;
   std::optional<render::ar::Plane> ground;  // the object stands on it
   double ground_band = 0.0;
   // The map's point spacing for the occluders' splats, refreshed now and then.
@@ -142,6 +152,9 @@ struct ReplayRender::Impl {
   // it first has enough points; from then on it stays where it is.
   void place_object(const std::vector<PointSnapshot>& points, const std::vector<KeyFrameSnapshot>& keyframes,
                     std::size_t frame_number) {
+    tracked = true;
+    most_points = std::max(most_points, points.size());
+    most_keyframes = std::max(most_keyframes, keyframes.size());
     if (object || points.size() < replay_render_detail::kMinPointsForPlane ||
         keyframes.size() < replay_render_detail::kMinKeyframesForPlane)
       return;
@@ -157,8 +170,11 @@ struct ReplayRender::Impl {
     for (const KeyFrameSnapshot& kf : keyframes) keyframes_T_c_w.push_back(kf.T_c_w.isometry());
     // Seen from the newest keyframe: the object appears in the view it is placed in.
     const auto placement = render::ar::place_object(placement_points, keyframes_T_c_w);
+    no_plane_found = !placement;
     if (!placement) return;
     object = placement->object;
+    ++placements;
+    last_frame_in_view = frame_number;
     if (placement->on_ground) ground = placement->fit.plane;
     ground_band = placement->ground_band;
     const render::ar::PlaneFit* fit = &placement->fit;
@@ -169,6 +185,7 @@ struct ReplayRender::Impl {
     plane["inliers"] = fit->inliers.size();
     plane["points"] = points.size();
     plane["placed_at_frame"] = frame_number;
+    plane["placements"] = placements;
     Json normal = Json::array();
     for (int i = 0; i < 3; ++i) normal.push_back(object->T_w_o.linear()(i, 2));
     plane["normal_w"] = normal;
@@ -192,21 +209,25 @@ struct ReplayRender::Impl {
       spacing = render::ar::point_spacing(occluder_points);
       spacing_points = points.size();
     }
-    return render::ar::occluder_depth(occluder_points, T_c_w, ar_view.object_intrinsics(), spacing);
+    const render::PinholeIntrinsics& intrinsics = ar_view.object_intrinsics();
+    return render::ar::occluder_depth(occluder_points, T_c_w, intrinsics, spacing, {},
+                                      render::ar::object_region(*object, T_c_w, intrinsics));
   }
 
   // The frame's occlusion against the true depth: the map's scale from the
   // points the tracker found (the true depth at their pixels over theirs).
-  void score_occlusion(double timestamp, const render::ar::ArFrameContent& content, const Eigen::Isometry3d& T_c_w) {
+  // Returns whether the object is in the camera's view (hidden or not).
+  bool score_occlusion(double timestamp, const render::ar::ArFrameContent& content, const Eigen::Isometry3d& T_c_w) {
     ++frames_with_object;
     const cv::Mat object_z = render::ar::object_depth(*object, camera, T_c_w);
+    const bool in_view = render::ar::leaves_object_visible(object_z, cv::Mat());
     const cv::Mat& occluder_z = content.occluder_depth;
     if (render::ar::leaves_object_visible(object_z, occluder_z)) ++frames_object_visible;
-    if (truth_depth.empty() || occluder_z.size() != object_z.size()) return;
+    if (truth_depth.empty() || occluder_z.size() != object_z.size()) return in_view;
     const auto nearest = std::min_element(truth_depth.begin(), truth_depth.end(), [&](const auto& a, const auto& b) {
       return std::abs(a.first - timestamp) < std::abs(b.first - timestamp);
     });
-    if (std::abs(nearest->first - timestamp) > 1e-3) return;
+    if (std::abs(nearest->first - timestamp) > 1e-3) return in_view;
     const cv::Mat depth_mm = cv::imread(nearest->second.string(), cv::IMREAD_ANYDEPTH);
     if (depth_mm.type() != CV_16UC1 || depth_mm.size() != object_z.size())
       throw Error(nearest->second.string() + ": expected a 16-bit depth PNG of the camera's size");
@@ -220,11 +241,35 @@ struct ReplayRender::Impl {
       const std::uint16_t mm = depth_mm.at<std::uint16_t>(v, u);
       if (mm > 0) ratios.push_back(mm * 1e-3 / p_c.z());
     }
-    if (ratios.size() < 10) return;
+    if (ratios.size() < 10) return in_view;
     const double metres_per_unit = median(std::move(ratios));
     cv::Mat truth_z;
     depth_mm.convertTo(truth_z, CV_32F, 1e-3 / metres_per_unit);
     occlusion.add_frame(object_z, occluder_z, truth_z);
+    return in_view;
+  }
+
+  // Gives the object up when it has been out of view too long (placed again
+  // on the next rendered frame).
+  void forget_object_left_behind(std::size_t frame_number, bool in_view) {
+    if (in_view) last_frame_in_view = frame_number;
+    if (!last_frame_in_view || frame_number < *last_frame_in_view + replay_render_detail::kReplaceAfterFramesOutOfView)
+      return;
+    object.reset();
+    ground.reset();
+  }
+
+  // Why no object stands in the view (only asked when none does).
+  std::string why_no_object() const {
+    using replay_render_detail::kMinKeyframesForPlane, replay_render_detail::kMinPointsForPlane;
+    if (!tracked) return "no frame was tracked";
+    if (no_plane_found)
+      return "no plane in the map: neither road or pavement points, nor its lowest points, nor any plane of " +
+             std::to_string(render::ar::PlaneFinderOptions{}.min_inliers) + " of its " +
+             std::to_string(most_points) + " points";
+    return "the map never had " + std::to_string(kMinPointsForPlane) + " points in " +
+           std::to_string(kMinKeyframesForPlane) + " keyframes to look for a plane in (at most " +
+           std::to_string(most_points) + " points, " + std::to_string(most_keyframes) + " keyframes)";
   }
 
   cv::Mat draw_map_view(const std::vector<PointSnapshot>& points, const std::vector<KeyFrameSnapshot>& keyframes,
@@ -300,6 +345,8 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
     m.ground.reset();
     m.trajectory_w.clear();
     m.plane = Json();
+    m.most_points = m.most_keyframes = 0;
+    m.no_plane_found = false;
   }
   std::optional<Eigen::Isometry3d> T_w_c;
   if (report.has_pose) {
@@ -330,7 +377,8 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
   for (const auto& [text, bgr] : legend) content.legend.push_back({text, bgr, false});
   render::ar::ArFrameStats stats;
   cv::Mat ar = m.ar_view.render(content, &stats);
-  if (T_w_c && m.object) m.score_occlusion(report.timestamp, content, T_w_c->inverse());
+  if (T_w_c && m.object)
+    m.forget_object_left_behind(frame_number, m.score_occlusion(report.timestamp, content, T_w_c->inverse()));
   const bool overlay = stats.object_drawn || stats.points_drawn > 0;
   if (!overlay) ++m.without_overlay;
   const std::string status = std::string(to_string(report.status)) + (T_w_c ? "" : " (no overlay)");
@@ -365,13 +413,20 @@ Json ReplayRender::finish(double replay_fps) {
   out["frames_rendered"] = m.rendered;
   out["frames_without_overlay"] = m.without_overlay;
   out["every"] = options_.every;
-  out["frames_dir"] = m.frames_dir.string();
-  out["video"] = m.video_path.string();
+  const fs::path reported = options_.reported_dir.empty() ? options_.dir : options_.reported_dir;
+  out["frames_dir"] = (reported / m.frames_dir.filename()).string();
+  out["video"] = (reported / m.video_path.filename()).string();
   out["video_codec"] = video_codec();
-  out["contact_sheet"] = m.sheet.empty() ? Json() : Json(m.sheet_path.string());
+  out["contact_sheet"] = m.sheet.empty() ? Json() : Json((reported / m.sheet_path.filename()).string());
   out["frame_size"] = std::to_string(m.frame_size.width) + "x" + std::to_string(m.frame_size.height);
   out["gl_renderer"] = m.ar_view.gl_renderer();
-  out["plane"] = m.plane;
+  if (m.object) {
+    out["plane"] = m.plane;
+  } else {
+    const std::string why = m.why_no_object();
+    spdlog::warn("render: no virtual object in the view: {}", why);
+    out["plane"] = Json{{"kind", "none"}, {"why", why}};
+  }
   // Occlusion by the map: frames the object was drawn in, those where part
   // of it showed; with a synthetic sequence's true depth, how well the map
   // hid it (render/ar/occlusion_score.hpp).
@@ -380,6 +435,10 @@ Json ReplayRender::finish(double replay_fps) {
   if (m.occlusion.frames() > 0) {
     out["occlusion_iou"] = m.occlusion.iou() ? Json(*m.occlusion.iou()) : Json();
     out["occlusion_frames_scored"] = m.occlusion.frames();
+    out["occlusion_hidden_render"] = m.occlusion.hidden_share_render();
+    out["occlusion_hidden_truth"] = m.occlusion.hidden_share_truth();
+    out["occlusion_precision"] = m.occlusion.precision();
+    out["occlusion_recall"] = m.occlusion.recall();
     out["occlusion_flicker"] = m.occlusion.flicker_render();
     out["occlusion_flicker_truth"] = m.occlusion.flicker_truth();
   }

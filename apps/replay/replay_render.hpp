@@ -28,6 +28,9 @@ namespace facadeslam::apps {
 
 struct ReplayRenderOptions {
   std::filesystem::path dir;
+  // The folder's name for the report: `dir` may be a staging folder that
+  // becomes it when the replay succeeds. Empty: `dir`.
+  std::filesystem::path reported_dir;
   std::size_t every = 1;  // render frames 0, N, 2N, ...
   double video_fps = 30.0;
   std::string title = "facadeslam replay";  // the contact sheet's, before "augmented view | map view"

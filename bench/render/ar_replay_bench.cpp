@@ -15,7 +15,8 @@
 #include "bench/bench_sequences.hpp"
 #include "render/ar/ar_view.hpp"
 #include "render/ar/follow_camera.hpp"
-#include "render/ar/plane_finder.hpp"
+#include "render/ar/map_occlusion.hpp"
+#include "render/ar/object_placement.hpp"
 #include "render/ar/virtual_object.hpp"
 #include "render/map_view.hpp"
 #include "render/map_view_framing.hpp"
@@ -32,7 +33,10 @@ const DemoFrames* demo() { return bench::demo_sequence(); }
 // apps/replay/replay_render.cpp, without its files).
 class AugmentedViewDrawer {
  public:
-  explicit AugmentedViewDrawer(const Camera& camera) : ar_view_(camera), height_(camera.height()) {}
+  // `occlusion`: the map's points hide the object (render/ar/map_occlusion),
+  // all of them sparse occluders, as unlabelled points are.
+  AugmentedViewDrawer(const Camera& camera, bool occlusion)
+      : ar_view_(camera), height_(camera.height()), occlusion_(occlusion) {}
 
   void draw(const Frame& frame, const FrameReport& report, const System& system) {
     if (!report.has_pose) return;
@@ -40,13 +44,31 @@ class AugmentedViewDrawer {
     const std::vector<KeyFrameSnapshot> keyframes = system.map().snapshot_keyframes();
     std::vector<Eigen::Vector3d> points_w;
     for (const PointSnapshot& p : points) points_w.push_back(p.geometry.p_w);
-    if (!object_ && points.size() >= 80 && keyframes.size() >= 3)
-      if (const auto fit = render::ar::find_dominant_plane(points_w))
-        object_ = render::ar::place_on_plane(*fit, points_w, keyframes.back().T_c_w.inverse().isometry());
+    if (!object_ && points.size() >= 80 && keyframes.size() >= 3) {
+      std::vector<render::ar::PlacementPoint> placement_points;
+      for (const Eigen::Vector3d& p : points_w) placement_points.push_back({p, false});
+      std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+      for (const KeyFrameSnapshot& kf : keyframes) keyframes_T_c_w.push_back(kf.T_c_w.isometry());
+      if (const auto placement = render::ar::place_object(placement_points, keyframes_T_c_w))
+        object_ = placement->object;
+    }
     render::ar::ArFrameContent content;
     content.image = frame.colour;
     content.T_w_c = report.T_c_w.inverse().isometry();
     content.object = object_;
+    if (occlusion_ && object_) {
+      std::vector<render::ar::OccluderPoint> occluders;
+      for (const Eigen::Vector3d& p : points_w) occluders.push_back({p, render::ar::OccluderKind::sparse});
+      // As the replay does: the spacing measured again when the map has grown by a tenth.
+      if (spacing_ == 0.0 || points.size() > spacing_points_ + spacing_points_ / 10) {
+        spacing_ = render::ar::point_spacing(occluders);
+        spacing_points_ = points.size();
+      }
+      const render::PinholeIntrinsics& intrinsics = ar_view_.object_intrinsics();
+      const Eigen::Isometry3d T_c_w = report.T_c_w.isometry();
+      content.occluder_depth = render::ar::occluder_depth(occluders, T_c_w, intrinsics, spacing_, {},
+                                                          render::ar::object_region(*object_, T_c_w, intrinsics));
+    }
     for (const Eigen::Vector3d& p : points_w) content.points.push_back({p, cv::Vec3b(0, 0, 255)});
     benchmark::DoNotOptimize(ar_view_.render(content).data);
 
@@ -66,10 +88,15 @@ class AugmentedViewDrawer {
   render::ar::ArView ar_view_;
   render::MapView map_view_;
   int height_;
+  bool occlusion_;
   std::optional<render::ar::VirtualObject> object_;
+  double spacing_ = 0.0;
+  std::size_t spacing_points_ = 0;
 };
 
-void replay(benchmark::State& state, bool draw) {
+enum class Drawing { none, augmented_view, with_occlusion };
+
+void replay(benchmark::State& state, Drawing drawing) {
   const DemoFrames* d = demo();
   if (!d) {
     state.SkipWithError("data/demo/sequence is not rendered (run scripts/make-demo)");
@@ -80,7 +107,7 @@ void replay(benchmark::State& state, bool draw) {
     options.semantics.enabled = false;
     System system(d->camera, options);
     std::optional<AugmentedViewDrawer> drawer;
-    if (draw) drawer.emplace(d->camera);
+    if (drawing != Drawing::none) drawer.emplace(d->camera, drawing == Drawing::with_occlusion);
     for (const Frame& f : d->frames) {
       const FrameReport report = system.process(f);
       if (drawer) drawer->draw(f, report, system);
@@ -90,10 +117,12 @@ void replay(benchmark::State& state, bool draw) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * d->frames.size()));
 }
 
-void BM_ReplayThreaded(benchmark::State& state) { replay(state, false); }
-void BM_ReplayThreadedWithAugmentedView(benchmark::State& state) { replay(state, true); }
+void BM_ReplayThreaded(benchmark::State& state) { replay(state, Drawing::none); }
+void BM_ReplayThreadedWithAugmentedView(benchmark::State& state) { replay(state, Drawing::augmented_view); }
+void BM_ReplayThreadedWithOcclusion(benchmark::State& state) { replay(state, Drawing::with_occlusion); }
 BENCHMARK(BM_ReplayThreaded)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ReplayThreadedWithAugmentedView)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ReplayThreadedWithOcclusion)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

@@ -20,6 +20,7 @@
 
 #include "render/ar/ar_view.hpp"
 #include "render/ar/follow_camera.hpp"
+#include "render/ar/map_occlusion.hpp"
 #include "render/ar/video_writer.hpp"
 #include "render/map_view.hpp"
 #include "render/offscreen_renderer.hpp"
@@ -190,6 +191,31 @@ void BM_ArOverlay(benchmark::State& state) {
   frames_per_second(state);
 }
 BENCHMARK(BM_ArOverlay)->Apply(at_both_sizes_plain_and_distorted);
+
+// The same overlay with the map hiding the object: the occluders' depth
+// made from the frame's points every frame (half of them a facade's
+// surface, half sparse), then the object tested against it. Its ratio to
+// BM_ArOverlay of the same run is the cost of occlusion.
+void BM_ArOverlayWithOcclusion(benchmark::State& state) {
+  const Camera camera = bench_camera(state);
+  ArBenchFrame frame = ar_bench_frame(camera);
+  render::ar::ArView view(camera);
+  std::vector<render::ar::OccluderPoint> occluders;
+  for (std::size_t i = 0; i < frame.map_points.size(); ++i)
+    occluders.push_back({frame.map_points[i].cast<double>(),
+                         i % 2 ? render::ar::OccluderKind::sparse : render::ar::OccluderKind::surface});
+  const double spacing = render::ar::point_spacing(occluders);
+  const Eigen::Isometry3d T_c_w = frame.content.T_w_c->inverse();
+  for (auto _ : state) {
+    const render::PinholeIntrinsics& intrinsics = view.object_intrinsics();
+    frame.content.occluder_depth = render::ar::occluder_depth(
+        occluders, T_c_w, intrinsics, spacing, {}, render::ar::object_region(*frame.content.object, T_c_w, intrinsics));
+    const cv::Mat image = view.render(frame.content);
+    benchmark::DoNotOptimize(image.data);
+  }
+  frames_per_second(state);
+}
+BENCHMARK(BM_ArOverlayWithOcclusion)->Apply(at_both_sizes_plain_and_distorted);
 
 // The overlay and the map view beside it (what `replay --render` draws per
 // frame, before PNG and video encoding).

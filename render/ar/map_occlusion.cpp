@@ -45,9 +45,38 @@ double point_spacing(const std::vector<OccluderPoint>& points) {
   return *middle;
 }
 
+cv::Rect object_region(const VirtualObject& object, const Eigen::Isometry3d& T_c_w,
+                       const PinholeIntrinsics& intrinsics) {
+  const cv::Rect image(0, 0, intrinsics.width, intrinsics.height);
+  double u0 = 1e300, v0 = 1e300, u1 = -1e300, v1 = -1e300;
+  for (const Eigen::Vector3d& corner : object.corners_w()) {
+    const Eigen::Vector3d p_c = T_c_w * corner;
+    if (p_c.z() <= 1e-9) return image;
+    const Eigen::Vector2d px = intrinsics.project(p_c);
+    u0 = std::min(u0, px.x()), v0 = std::min(v0, px.y()), u1 = std::max(u1, px.x()), v1 = std::max(v1, px.y());
+  }
+  // Two pixels beyond the corners: the soft edge samples the neighbours.
+  const double x0 = std::clamp(std::floor(u0) - 2.0, 0.0, static_cast<double>(intrinsics.width));
+  const double y0 = std::clamp(std::floor(v0) - 2.0, 0.0, static_cast<double>(intrinsics.height));
+  const double x1 = std::clamp(std::ceil(u1) + 3.0, 0.0, static_cast<double>(intrinsics.width));
+  const double y1 = std::clamp(std::ceil(v1) + 3.0, 0.0, static_cast<double>(intrinsics.height));
+  return cv::Rect(static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0), static_cast<int>(y1 - y0)) &
+         image;
+}
+
 cv::Mat occluder_depth(const std::vector<OccluderPoint>& points, const Eigen::Isometry3d& T_c_w,
-                       const PinholeIntrinsics& intrinsics, double spacing, const OcclusionOptions& options) {
-  cv::Mat sparse(intrinsics.height, intrinsics.width, CV_32FC1, cv::Scalar(kNothing));
+                       const PinholeIntrinsics& intrinsics, double spacing, const OcclusionOptions& options,
+                       cv::Rect region) {
+  const cv::Rect image(0, 0, intrinsics.width, intrinsics.height);
+  region = region.empty() ? image : region & image;
+  cv::Mat depth(intrinsics.height, intrinsics.width, CV_32FC1, cv::Scalar(kNothing));
+  if (region.empty()) return depth;
+  // Drawn in the region grown by the closing's reach (so that it closes the
+  // same gaps as over the whole image), then cut back to the region.
+  const int reach = std::max(0, options.surface_close_px);
+  const cv::Rect drawn = cv::Rect(region.x - reach, region.y - reach, region.width + 2 * reach,
+                                  region.height + 2 * reach) & image;
+  cv::Mat sparse(drawn.size(), CV_32FC1, cv::Scalar(kNothing));
   cv::Mat surface = sparse.clone();
   bool any_surface = false;
   for (const OccluderPoint& point : points) {
@@ -58,10 +87,9 @@ cv::Mat occluder_depth(const std::vector<OccluderPoint>& points, const Eigen::Is
     const bool is_surface = point.kind == OccluderKind::surface;
     const double share = is_surface ? options.surface_radius : options.sparse_radius;
     const double radius = std::clamp(share * spacing * intrinsics.fx / p_c.z(), 0.5, options.max_radius_px);
-    if (px.x() < -radius || px.y() < -radius || px.x() > intrinsics.width + radius ||
-        px.y() > intrinsics.height + radius)
-      continue;
-    splat(is_surface ? surface : sparse, px.x(), px.y(), radius, static_cast<float>(p_c.z()));
+    const double u = px.x() - drawn.x, v = px.y() - drawn.y;
+    if (u < -radius || v < -radius || u > drawn.width + radius || v > drawn.height + radius) continue;
+    splat(is_surface ? surface : sparse, u, v, radius, static_cast<float>(p_c.z()));
     any_surface = any_surface || is_surface;
   }
   if (any_surface && options.surface_close_px > 1) {
@@ -74,7 +102,10 @@ cv::Mat occluder_depth(const std::vector<OccluderPoint>& points, const Eigen::Is
     cv::erode(surface, grown, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(kNothing));
     cv::dilate(grown, surface, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(kNothing));
   }
-  return cv::min(sparse, surface);
+  const cv::Rect inside(region.x - drawn.x, region.y - drawn.y, region.width, region.height);
+  cv::Mat out = depth(region);
+  cv::min(sparse(inside), surface(inside), out);
+  return depth;
 }
 
 }  // namespace facadeslam::render::ar

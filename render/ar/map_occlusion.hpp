@@ -16,6 +16,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
+#include "render/ar/virtual_object.hpp"
 #include "render/projection.hpp"
 
 namespace facadeslam::render::ar {
@@ -39,8 +40,17 @@ struct OcclusionOptions {
 double point_spacing(const std::vector<OccluderPoint>& points);
 
 // CV_32FC1 of the intrinsics' size: the nearest occluder's z per pixel,
-// +infinity where nothing occludes.
+// +infinity where nothing occludes. Only `region` is drawn (the object's box:
+// nothing outside it can hide the object; empty: the whole image), which
+// keeps the cost with the object's size rather than the image's.
 cv::Mat occluder_depth(const std::vector<OccluderPoint>& points, const Eigen::Isometry3d& T_c_w,
-                       const PinholeIntrinsics& intrinsics, double spacing, const OcclusionOptions& options = {});
+                       const PinholeIntrinsics& intrinsics, double spacing, const OcclusionOptions& options = {},
+                       cv::Rect region = {});
+
+// The pixels `object` covers seen through `intrinsics` from T_c_w, as a box
+// clipped to the image (the whole image when a corner is behind the camera,
+// empty when the object is off-screen): the region for occluder_depth.
+cv::Rect object_region(const VirtualObject& object, const Eigen::Isometry3d& T_c_w,
+                       const PinholeIntrinsics& intrinsics);
 
 }  // namespace facadeslam::render::ar

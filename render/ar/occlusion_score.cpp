@@ -96,6 +96,9 @@ void OcclusionScore::add_frame(const cv::Mat& object_z, const cv::Mat& occluder_
   if (object > render_hidden) ++frames_visible_;
   both_ += static_cast<double>(both);
   either_ += static_cast<double>(render_hidden + truth_hidden - both);
+  object_ += static_cast<double>(object);
+  render_hidden_ += static_cast<double>(render_hidden);
+  truth_hidden_ += static_cast<double>(truth_hidden);
   if (object == 0) return;
   const double render_share = static_cast<double>(render_hidden) / static_cast<double>(object);
   const double truth_share = static_cast<double>(truth_hidden) / static_cast<double>(object);

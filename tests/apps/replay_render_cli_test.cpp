@@ -93,6 +93,25 @@ TEST_F(ReplayRenderCli, RenderingLeavesTrackingBitForBitTheSameAndWritesItsOutpu
   // Nothing half-written is left behind.
   for (const auto& entry : fs::directory_iterator(render_dir))
     EXPECT_THAT(entry.path().filename().string(), ::testing::Not(HasSubstr("partial")));
+  // The report names where the outputs are, not the folder they were staged in.
+  const auto render = nlohmann::json::parse(report)["render"];
+  EXPECT_EQ(render["video"], (render_dir / "augmented.mp4").string());
+  EXPECT_EQ(render["frames_dir"], (render_dir / "frames").string());
+  EXPECT_EQ(render["contact_sheet"], (render_dir / "contact_sheet.png").string());
+}
+
+// Bad input for the object: a map too small to stand it on renders the
+// frames without it, and the report and the log say why.
+TEST_F(ReplayRenderCli, AMapTooSmallForAPlaneRendersWithoutTheObjectAndSaysWhy) {
+  const fs::path out = dir_->path() / "small", render_dir = out / "ar";
+  // Two frames: the map never initialises.
+  const test::CliResult r = replay(out, "--limit 2 --render " + quoted(render_dir));
+  ASSERT_EQ(r.exit_code, 3) << r.err;  // never initialised
+  const auto render = nlohmann::json::parse(test::read_file_text(out / "report.json"))["render"];
+  EXPECT_EQ(render["plane"]["kind"], "none");
+  EXPECT_EQ(render["plane"]["why"], "no frame was tracked");
+  EXPECT_EQ(render["frames_with_object"], 0);
+  EXPECT_THAT(r.err, HasSubstr("render: no virtual object in the view: no frame was tracked"));
 }
 
 }  // namespace

@@ -46,6 +46,46 @@ TEST(MapOcclusion, AFacadesPointsCloseIntoASurfaceAndTheSkyNeverOccludes) {
   EXPECT_EQ(cv::countNonZero(sky < std::numeric_limits<float>::infinity()), 0);
 }
 
+// Drawn only in a region, the occluders' depth there is what the whole
+// image's is (the closing reaches across the region's edge alike), and
+// nothing outside it.
+TEST(MapOcclusion, ARegionHoldsWhatTheWholeImageHoldsThere) {
+  auto points = wall(OccluderKind::surface);
+  for (OccluderPoint& p : points) p.p_w.x() += 0.013 * std::sin(7.0 * p.p_w.y());  // gaps to close
+  const auto sparse = wall(OccluderKind::sparse, 3.0);
+  for (std::size_t i = 0; i < sparse.size(); i += 7) points.push_back(sparse[i]);
+  const double spacing = render::ar::point_spacing(points);
+  const Eigen::Isometry3d T_c_w = Eigen::Isometry3d::Identity();
+  const cv::Mat whole = render::ar::occluder_depth(points, T_c_w, kPinhole, spacing);
+  const cv::Rect region(200, 150, 90, 70);
+  const cv::Mat part = render::ar::occluder_depth(points, T_c_w, kPinhole, spacing, {}, region);
+  int compared = 0;
+  for (int y = 0; y < whole.rows; ++y)
+    for (int x = 0; x < whole.cols; ++x) {
+      if (region.contains({x, y})) {
+        ASSERT_EQ(part.at<float>(y, x), whole.at<float>(y, x)) << x << "," << y;
+        compared += std::isfinite(whole.at<float>(y, x));
+      } else {
+        ASSERT_TRUE(std::isinf(part.at<float>(y, x))) << x << "," << y;
+      }
+    }
+  EXPECT_GT(compared, 90 * 70 / 2);
+}
+
+// The object's region: its corners' box, a little grown, inside the image.
+TEST(MapOcclusion, TheObjectsRegionIsItsBoxOnTheImage) {
+  render::ar::VirtualObject object;
+  object.T_w_o.translation() = Eigen::Vector3d(0, 0, 5);
+  object.size = 1.0;
+  const cv::Rect region = render::ar::object_region(object, Eigen::Isometry3d::Identity(), kPinhole);
+  // Corners at x, y = +-0.5 and z 5..6: +-50 px around the centre at z = 5.
+  EXPECT_NEAR(region.x, 319.5 - 50 - 2, 1.5);
+  EXPECT_NEAR(region.width, 100 + 5, 2.5);
+  Eigen::Isometry3d behind = Eigen::Isometry3d::Identity();
+  behind.translation() = Eigen::Vector3d(0, 0, -5.5);  // the camera inside the cube's depth
+  EXPECT_EQ(render::ar::object_region(object, behind, kPinhole), cv::Rect(0, 0, 640, 480));
+}
+
 TEST(MapOcclusion, SparsePointsCoverLessThanASurface) {
   const auto tree = wall(OccluderKind::sparse);
   const double spacing = render::ar::point_spacing(tree);
@@ -103,6 +143,25 @@ TEST(ObjectPlacement, PrefersTheGroundToALargerFacade) {
   EXPECT_GT((keyframes_T_c_w.back() * base).z(), 0.0) << "in front of the reference camera";
   EXPECT_NEAR(placement->object.T_w_o.linear().col(2).dot(Eigen::Vector3d(0, -1, 0)), 1.0, 1e-6) << "upright";
   EXPECT_GT(placement->ground_band, 0.0);
+}
+
+// Bad input: five points, or a cloud with no plane and nothing below the
+// cameras, give no placement (the replay then renders without the object).
+TEST(ObjectPlacement, NothingForFivePointsOrACloudWithoutAPlane) {
+  std::vector<Eigen::Isometry3d> keyframes_T_c_w(3, Eigen::Isometry3d::Identity());
+  std::vector<render::ar::PlacementPoint> five;
+  for (int i = 0; i < 5; ++i) five.push_back({{0.1 * i, 1.0, 2.0 + i}, true});
+  EXPECT_FALSE(render::ar::place_object(five, keyframes_T_c_w).has_value());
+
+  // Points scattered through a ball above the cameras (y down: negative y).
+  std::vector<render::ar::PlacementPoint> cloud;
+  unsigned state = 7;
+  const auto uniform = [&state] {
+    state = state * 1103515245u + 12345u;
+    return static_cast<double>((state >> 8) & 0xffff) / 65535.0 - 0.5;
+  };
+  for (int i = 0; i < 300; ++i) cloud.push_back({{4 * uniform(), -3.0 + 2 * uniform(), 6.0 + 4 * uniform()}, false});
+  EXPECT_FALSE(render::ar::place_object(cloud, keyframes_T_c_w).has_value());
 }
 
 }  // namespace
