@@ -145,6 +145,29 @@ TEST(ObjectPlacement, PrefersTheGroundToALargerFacade) {
   EXPECT_GT(placement->ground_band, 0.0);
 }
 
+// A road with few points of its own: the ground's points lie far to the
+// side (a lawn), so the object stands straight ahead on the plane, at their
+// median depth, not beside the road where the camera would lose it at once.
+TEST(ObjectPlacement, StandsStraightAheadWhenTheGroundsPointsAreToTheSide) {
+  std::vector<render::ar::PlacementPoint> points;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 10; ++j) points.push_back({{6.0 + 0.2 * j, 0.0, 4.0 + 0.5 * i}, true});  // y down
+  std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+  for (int k = 0; k < 3; ++k) {
+    Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
+    T_w_c.translation() = Eigen::Vector3d(0.0, -1.5, -0.5 * k);
+    keyframes_T_c_w.push_back(T_w_c.inverse());
+  }
+  const auto placement = render::ar::place_object(points, keyframes_T_c_w);
+  ASSERT_TRUE(placement.has_value());
+  EXPECT_TRUE(placement->on_ground);
+  const Eigen::Vector3d base = placement->object.T_w_o.translation();
+  EXPECT_NEAR(base.x(), 0.0, 1e-9);
+  EXPECT_NEAR(base.y(), 0.0, 1e-9);
+  // The median depth of the points in front of the reference camera (at z = -1).
+  EXPECT_NEAR(base.z(), -1.0 + 10.0, 0.3);
+}
+
 // Bad input: five points, or a cloud with no plane and nothing below the
 // cameras, give no placement (the replay then renders without the object).
 TEST(ObjectPlacement, NothingForFivePointsOrACloudWithoutAPlane) {
