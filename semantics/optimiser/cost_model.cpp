@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/config/config_node.hpp"
+#include "core/config/settings_table.hpp"
 #include "semantics/descriptor/extraction.hpp"
 #include "semantics/descriptor/planes.hpp"
 
@@ -80,39 +81,74 @@ CostBreakdown modelled_cost(const DescriptorParams& p, const CostModel& m) {
   return cost;
 }
 
-void read_cost_model(const ConfigNode& node, CostModel& m) {
-  const Range cost = Range::closed(0, 100);
-  const auto array = [&](const std::string& key, auto& values, Range range) {
-    if (!node.has(key)) return;
-    const std::vector<double> read = node.get_doubles(key, values.size(), range);
-    for (std::size_t i = 0; i < values.size(); ++i) values[i] = read[i];
-  };
-  m.equalise = node.get_double("equalise", cost, m.equalise);
-  m.blur_per_tap = node.get_double("blur_per_tap", cost, m.blur_per_tap);
-  array("colour_space", m.colour_space, cost);
-  m.colour_plane = node.get_double("colour_plane", cost, m.colour_plane);
-  m.angle_plane = node.get_double("angle_plane", cost, m.angle_plane);
-  m.edge_distance = node.get_double("edge_distance", cost, m.edge_distance);
-  m.gevers_l_plane = node.get_double("gevers_l_plane", cost, m.gevers_l_plane);
-  m.gevers_c_plane = node.get_double("gevers_c_plane", cost, m.gevers_c_plane);
-  m.geusebroek_plane = node.get_double("geusebroek_plane", cost, m.geusebroek_plane);
-  m.position = node.get_double("position", cost, m.position);
-  m.statistics_plane = node.get_double("statistics_plane", cost, m.statistics_plane);
-  array("moments", m.moments, cost);
-  m.hu = node.get_double("hu", cost, m.hu);
-  m.affine = node.get_double("affine", cost, m.affine);
-  array("singular_values", m.singular_values, cost);
-  m.gradient_angles = node.get_double("gradient_angles", cost, m.gradient_angles);
-  m.per_value = node.get_double("per_value", cost, m.per_value);
-  const Range exponent = Range::closed(0, 4);
-  m.statistics_exponent = node.get_double("statistics_exponent", exponent, m.statistics_exponent);
-  m.moments_exponent = node.get_double("moments_exponent", exponent, m.moments_exponent);
-  m.singular_values_exponent = node.get_double("singular_values_exponent", exponent, m.singular_values_exponent);
-  m.gradient_angles_exponent = node.get_double("gradient_angles_exponent", exponent, m.gradient_angles_exponent);
-  // SIFT's cost is a divisor: never 0.
-  array("sift", m.sift, Range::positive(100));
-  node.finish();
+namespace {
+
+// A fixed-length list of costs, e.g. one per colour space.
+template <std::size_t N>
+void add_costs(SettingsTable<CostModel>& t, const std::string& key, std::array<double, N> CostModel::*member,
+               Range range, const std::string& doc) {
+  t.add_custom(
+      [key, member, range](const ConfigNode& node, CostModel& m) {
+        if (!node.has(key)) return;
+        const std::vector<double> read = node.get_doubles(key, N, range);
+        for (std::size_t i = 0; i < N; ++i) (m.*member)[i] = read[i];
+      },
+      [key, member, doc](SettingsWriter& out, const CostModel& m) {
+        std::vector<std::string> values;
+        for (const double v : m.*member) values.push_back(SettingsWriter::format(v));
+        out.value(key, SettingsWriter::format_list(values), doc);
+      });
 }
+
+}  // namespace
+
+const SettingsTable<CostModel>& cost_model_settings() {
+  static const SettingsTable<CostModel> table = [] {
+    using C = CostModel;
+    SettingsTable<C> t;
+    const Range cost = Range::closed(0, 100);
+    t.add("equalise", &C::equalise, "equalising the luma and splitting the channels (any value reading a plane)", cost);
+    t.add("blur_per_tap", &C::blur_per_tap, "Gaussian blur, per tap of the genome's kernel (kernel 1: no blur)", cost);
+    add_costs(t, "colour_space", &C::colour_space, cost,
+              "converting to RGB, Lab, Luv, XYZ, HSV, HLS, YCrCb, opponent, beyond writing its planes");
+    t.add("colour_plane", &C::colour_plane, "one colour channel as a float plane", cost);
+    t.add("angle_plane", &C::angle_plane, "one gradient-angle plane (Sobel or Scharr)", cost);
+    t.add("edge_distance", &C::edge_distance, "grey image, Canny and the distance to its edges", cost);
+    t.add("gevers_l_plane", &C::gevers_l_plane, "one Gevers l plane", cost);
+    t.add("gevers_c_plane", &C::gevers_c_plane, "one Gevers c plane", cost);
+    t.add("geusebroek_plane", &C::geusebroek_plane, "one Geusebroek plane (H or C)", cost);
+    t.add("position", &C::position,
+          "per keypoint from here on, at patch radius 10: walking the keypoints and writing the rows (any active "
+          "value); the position values themselves cost next to nothing",
+          cost);
+    t.add("statistics_plane", &C::statistics_plane,
+          "mean and sigma of one plane over the patch (colour, Gevers, Geusebroek, edge distance)", cost);
+    add_costs(t, "moments", &C::moments, cost,
+              "a channel's moments up to order 2, 3, 4, 5 (the highest any moment, Hu or affine value needs)");
+    t.add("hu", &C::hu, "one Hu invariant, beyond its channel's moments", cost);
+    t.add("affine", &C::affine, "one affine moment invariant, beyond its channel's moments", cost);
+    add_costs(t, "singular_values", &C::singular_values, cost,
+              "a channel's sigma1..sigma_k for its highest active k = 1, 2, 3");
+    t.add("gradient_angles", &C::gradient_angles, "a channel's gradient-angle region means and differences", cost);
+    t.add("per_value", &C::per_value,
+          "each active value: what the parts, timed alone, miss together (from the genome with all 185 values)",
+          cost);
+    const Range exponent = Range::closed(0, 4);
+    t.add("statistics_exponent", &C::statistics_exponent,
+          "per-keypoint cost at radius r = cost at 10 x ((2r+1)/21)^exponent: statistics", exponent);
+    t.add("moments_exponent", &C::moments_exponent, "... moments, Hu and affine invariants", exponent);
+    t.add("singular_values_exponent", &C::singular_values_exponent, "... singular values", exponent);
+    t.add("gradient_angles_exponent", &C::gradient_angles_exponent, "... gradient angles", exponent);
+    // SIFT's cost is a divisor: never 0.
+    add_costs(t, "sift", &C::sift, Range::positive(100),
+              "cv::SIFT's cost with the patch of radius 3, 4, ..., 10, relative to radius 10 (the divisor of the "
+              "ratio)");
+    return t;
+  }();
+  return table;
+}
+
+void read_cost_model(const ConfigNode& node, CostModel& m) { cost_model_settings().read(node, m); }
 
 nlohmann::json to_json(const CostModel& m) {
   return {{"equalise", m.equalise},

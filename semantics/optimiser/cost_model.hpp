@@ -23,6 +23,8 @@
 
 namespace facadeslam {
 class ConfigNode;
+template <class Options>
+class SettingsTable;
 }
 
 namespace facadeslam::semantics {
@@ -89,6 +91,8 @@ inline double modelled_time_ratio(const DescriptorParams& params, const CostMode
 // Reads a `cost_model:` mapping over `model` (every key optional; unknown keys
 // and negative costs are errors naming the file and key).
 void read_cost_model(const ConfigNode& node, CostModel& model);
+// The `cost_model:` keys, each bound once to its member (read and written).
+const SettingsTable<CostModel>& cost_model_settings();
 // Every figure of the model, in the config's layout (the run's settings).
 nlohmann::json to_json(const CostModel& model);
 

@@ -1,6 +1,12 @@
 #include "semantics/optimiser/ga_options.hpp"
 
+#include <ostream>
+#include <string>
+#include <vector>
+
 #include "core/config/config_node.hpp"
+#include "core/config/settings_table.hpp"
+#include "core/config/settings_writer.hpp"
 
 namespace facadeslam::semantics {
 
@@ -23,65 +29,140 @@ const char* to_string(Crossover c) {
   return "?";
 }
 
+namespace {
+
+// An enum setting read and written by its names; `read_name` reads the key
+// among them (ConfigNode::get_choice with the names, which says what is
+// allowed when the file's value is not).
+template <class Enum, class ReadName>
+void add_enum(SettingsTable<GaOptions>& t, const std::string& key, Enum GaOptions::*member,
+              std::initializer_list<Enum> values, ReadName read_name, const std::string& doc) {
+  const std::vector<Enum> all(values);
+  t.add_custom(
+      [key, member, all, read_name](const ConfigNode& node, GaOptions& o) {
+        const std::string chosen = read_name(node, key, to_string(o.*member));
+        for (const Enum e : all)
+          if (chosen == to_string(e)) o.*member = e;
+      },
+      [key, member, all, doc](SettingsWriter& out, const GaOptions& o) {
+        std::string choices;
+        for (const Enum e : all) choices += (choices.empty() ? "" : " | ") + std::string(to_string(e));
+        out.value(key, to_string(o.*member), doc + ": " + choices);
+      });
+}
+
+SettingsTable<FitnessWeights> fitness_settings() {
+  using F = FitnessWeights;
+  SettingsTable<F> t;
+  const Range weight = Range::closed(0, 100);
+  t.add("overall", &F::overall, "weight of the overall recognition rate on the validation keypoints", weight);
+  t.add("average", &F::average, "weight of the average (per-class) recognition rate", weight);
+  t.add("invariance", &F::invariance,
+        "weight of the mean match rate under a 20 deg rotation, a 0.75 resize, a 5 px blur and a 3800 K illuminant "
+        "(evaluate invariance's measure) on invariance_images validation images",
+        weight);
+  t.add("time", &F::time, "weight of being slower than the target ratio to cv::SIFT", weight);
+  t.add("target_time_ratio", &F::target_time_ratio,
+        "modelled extraction time / cv::SIFT's on the same keypoints (cost_model) to reach (0.1: 10x faster)",
+        Range::closed(0.001, 100));
+  t.add("size", &F::size, "weight of the descriptor length (per 128 values, SIFT's length)", weight);
+  return t;
+}
+
+const SettingsTable<GaOptions>& ga_settings() {
+  static const SettingsTable<GaOptions> table = [] {
+    using G = GaOptions;
+    SettingsTable<G> t;
+    t.add("population", &G::population, "genomes per generation (the thesis genome is one of the first)",
+          Range::closed(2, 100000));
+    t.add("generations", &G::generations, "generations to run", Range::closed(1, 100000));
+    add_enum(
+        t, "selection", &G::selection,
+        {Selection::roulette, Selection::rank, Selection::tournament, Selection::stochastic_universal},
+        [](const ConfigNode& node, const std::string& key, const std::string& fallback) {
+          return node.get_choice(key, {"roulette", "rank", "tournament", "stochastic_universal"}, fallback);
+        },
+        "how parents are drawn");
+    t.add("tournament_size", &G::tournament_size, "genomes per tournament (tournament selection)",
+          Range::closed(1, 1000));
+    add_enum(
+        t, "crossover", &G::crossover, {Crossover::one_point, Crossover::two_point, Crossover::uniform},
+        [](const ConfigNode& node, const std::string& key, const std::string& fallback) {
+          return node.get_choice(key, {"one_point", "two_point", "uniform"}, fallback);
+        },
+        "how two parents' bits are crossed");
+    t.add("crossover_probability", &G::crossover_probability, "P_C: a pair of parents is crossed, else copied",
+          Range::closed(0, 1));
+    t.add("bit_flip_probability", &G::bit_flip_probability, "P_M: each bit of a child flips with this probability",
+          Range::closed(0, 1));
+    t.add("interchange_probability", &G::interchange_probability,
+          "a child has two random bits swap places with this probability", Range::closed(0, 1));
+    t.add("reverse_probability", &G::reverse_probability,
+          "... and a random bit and its neighbour swap with this probability", Range::closed(0, 1));
+    t.add("elites", &G::elites, "best genomes carried over unchanged (fewer than the population)",
+          Range::closed(0, 100000));
+    t.add("initial_activation_density", &G::initial_activation_density,
+          "share of activation bits on in a random first-generation genome (0.5: unbiased, ~92 of 185 values; a "
+          "search for a fast descriptor starts sparser, e.g. 0.05)",
+          Range::closed(0.001, 1));
+    t.add("scaling_multiple", &G::scaling_multiple, "linear fitness scaling: the best gets this multiple of the mean",
+          Range::closed(1, 100));
+    t.add("plateau_generations", &G::plateau_generations,
+          "stop when the best has not improved for this many generations (0: never)", Range::closed(0, 100000));
+    t.add("plateau_tolerance", &G::plateau_tolerance, "... by more than this", Range::closed(0, 1));
+    t.add("validation_share", &G::validation_share,
+          "share of train.txt held out to measure fitness (test.txt is never read)", Range::closed(0.01, 0.99));
+    t.add("folds", &G::folds,
+          ">= 2: cross-validation instead: train.txt cut into this many parts, each scored by a forest trained on "
+          "the others",
+          Range::closed(1, 20));
+    t.add("invariance_images", &G::invariance_images,
+          "validation images the invariance term is measured on (when its weight is > 0)", Range::closed(1, 1000));
+    t.add("image_cache_mb", &G::image_cache_mb,
+          "memory for the split's images decoded once for every evaluation, MB (~2 MB an image; 0: decode per use)",
+          Range::closed(0, 1000000));
+    t.add("max_train_images", &G::max_train_images,
+          "training images per evaluation, first of the shuffled split (0: all)", Range::closed(0, 1000000));
+    t.add("max_validation_images", &G::max_validation_images, "validation images per evaluation (0: all)",
+          Range::closed(0, 1000000));
+    t.add("max_samples", &G::max_samples, "training keypoints per evaluation, class-balanced draw (0: all)",
+          Range::closed(0, 100000000));
+    t.add("step", &G::step, "grid step of the keypoints, pixels", Range::closed(1, 1000));
+    t.add("max_trees", &G::max_trees,
+          "forest size cap during the search (0: the genome's); best.fsmodel uses the genome's own",
+          Range::closed(0, 10000));
+    t.add("max_depth", &G::max_depth, "tree depth cap during the search (0: the genome's)", Range::closed(0, 1000));
+    t.add("fitness", &G::weights, fitness_settings(),
+          "objective = overall*w + average*w + invariance*w - time*max(0, ratio/target - 1) - size*values/128");
+    t.add("cost_model", &G::cost_model, cost_model_settings(),
+          "the time term's ratio, modelled (not measured: a run's results depend on the genomes and the data "
+          "only): per-image and per-keypoint costs as shares of cv::SIFT's CPU time on the bench (640x480 facade, "
+          "3888 keypoints on a 9-pixel grid, SIFT's patch radius 10, one thread), from "
+          "`build/bench/bench_ga_cost_model` (docs/benchmarks.md)");
+    t.check([](const ConfigNode& root, const G& o) {
+      if (o.elites >= o.population)
+        root.fail("elites", "fewer than the population (" + std::to_string(o.population) + ")",
+                  std::to_string(o.elites));
+      if (o.tournament_size > o.population)
+        root.fail("tournament_size", "at most the population (" + std::to_string(o.population) + ")",
+                  std::to_string(o.tournament_size));
+    });
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
 GaOptions load_ga_options(const std::filesystem::path& path) {
-  GaOptions o;
-  const ConfigNode root = ConfigNode::load_file(path);
-  o.population = root.get_int("population", Range::closed(2, 100000), o.population);
-  o.generations = root.get_int("generations", Range::closed(1, 100000), o.generations);
-  const std::string selection =
-      root.get_choice("selection", {"roulette", "rank", "tournament", "stochastic_universal"}, to_string(o.selection));
-  o.selection = selection == "roulette"     ? Selection::roulette
-                : selection == "rank"       ? Selection::rank
-                : selection == "tournament" ? Selection::tournament
-                                            : Selection::stochastic_universal;
-  o.tournament_size = root.get_int("tournament_size", Range::closed(1, 1000), o.tournament_size);
-  const std::string crossover =
-      root.get_choice("crossover", {"one_point", "two_point", "uniform"}, to_string(o.crossover));
-  o.crossover = crossover == "one_point"   ? Crossover::one_point
-                : crossover == "two_point" ? Crossover::two_point
-                                           : Crossover::uniform;
-  o.crossover_probability = root.get_double("crossover_probability", Range::closed(0, 1), o.crossover_probability);
-  o.bit_flip_probability = root.get_double("bit_flip_probability", Range::closed(0, 1), o.bit_flip_probability);
-  o.interchange_probability =
-      root.get_double("interchange_probability", Range::closed(0, 1), o.interchange_probability);
-  o.reverse_probability = root.get_double("reverse_probability", Range::closed(0, 1), o.reverse_probability);
-  o.elites = root.get_int("elites", Range::closed(0, 100000), o.elites);
-  o.initial_activation_density =
-      root.get_double("initial_activation_density", Range::closed(0.001, 1), o.initial_activation_density);
-  o.scaling_multiple = root.get_double("scaling_multiple", Range::closed(1, 100), o.scaling_multiple);
-  o.plateau_generations = root.get_int("plateau_generations", Range::closed(0, 100000), o.plateau_generations);
-  o.plateau_tolerance = root.get_double("plateau_tolerance", Range::closed(0, 1), o.plateau_tolerance);
-  o.validation_share = root.get_double("validation_share", Range::closed(0.01, 0.99), o.validation_share);
-  o.folds = root.get_int("folds", Range::closed(1, 20), o.folds);
-  o.image_cache_mb = static_cast<std::size_t>(
-      root.get_int("image_cache_mb", Range::closed(0, 1000000), static_cast<int>(o.image_cache_mb)));
-  o.invariance_images = static_cast<std::size_t>(
-      root.get_int("invariance_images", Range::closed(1, 1000), static_cast<int>(o.invariance_images)));
-  o.max_train_images = static_cast<std::size_t>(root.get_int("max_train_images", Range::closed(0, 1000000), 0));
-  o.max_validation_images =
-      static_cast<std::size_t>(root.get_int("max_validation_images", Range::closed(0, 1000000), 0));
-  o.max_samples = static_cast<std::size_t>(root.get_int("max_samples", Range::closed(0, 100000000), 0));
-  o.step = root.get_int("step", Range::closed(1, 1000), o.step);
-  o.max_trees = root.get_int("max_trees", Range::closed(0, 10000), o.max_trees);
-  o.max_depth = root.get_int("max_depth", Range::closed(0, 1000), o.max_depth);
-  if (const auto w = root.optional_child("fitness")) {
-    FitnessWeights& f = o.weights;
-    f.overall = w->get_double("overall", Range::closed(0, 100), f.overall);
-    f.average = w->get_double("average", Range::closed(0, 100), f.average);
-    f.invariance = w->get_double("invariance", Range::closed(0, 100), f.invariance);
-    f.time = w->get_double("time", Range::closed(0, 100), f.time);
-    f.target_time_ratio = w->get_double("target_time_ratio", Range::closed(0.001, 100), f.target_time_ratio);
-    f.size = w->get_double("size", Range::closed(0, 100), f.size);
-    w->finish();
-  }
-  if (const auto c = root.optional_child("cost_model")) read_cost_model(*c, o.cost_model);
-  root.finish();
-  if (o.elites >= o.population)
-    root.fail("elites", "fewer than the population (" + std::to_string(o.population) + ")", std::to_string(o.elites));
-  if (o.tournament_size > o.population)
-    root.fail("tournament_size", "at most the population (" + std::to_string(o.population) + ")",
-              std::to_string(o.tournament_size));
-  return o;
+  GaOptions options;
+  ga_settings().read(ConfigNode::load_file(path), options);
+  return options;
+}
+
+void write_ga_settings(std::ostream& out, const GaOptions& options) {
+  SettingsWriter writer(out);
+  ga_settings().write(writer, options);
 }
 
 }  // namespace facadeslam::semantics

@@ -1,11 +1,13 @@
 #pragma once
 // Every setting of the genetic optimiser (thesis III.8 and IV.4), loaded from
-// configs/optimise.yaml (every key commented there). Defaults follow the
+// a YAML file such as configs/optimise.yaml (the defaults, as
+// `facadeslam config --dump optimise` writes them). Defaults follow the
 // issue: 30 genomes x 20 generations, tournament selection, two-point
 // crossover, bit-flip / interchange / reverse mutation, two elites, linear
 // fitness scaling.
 #include <cstdint>
 #include <filesystem>
+#include <iosfwd>
 #include <string>
 
 #include "semantics/optimiser/cost_model.hpp"
@@ -35,6 +37,8 @@ struct FitnessWeights {
   double time = 0.1;
   double target_time_ratio = 0.1;
   double size = 0.02;
+
+  friend bool operator==(const FitnessWeights&, const FitnessWeights&) = default;
 };
 
 struct GaOptions {
@@ -84,9 +88,14 @@ struct GaOptions {
   FitnessWeights weights;
   // The time term's per-module costs (the `cost_model:` block).
   CostModel cost_model;
+
+  friend bool operator==(const GaOptions&, const GaOptions&) = default;
 };
 
 // Throws Error naming the file and key for unknown keys and bad values.
 GaOptions load_ga_options(const std::filesystem::path& path);
+// Every setting with what it means, as YAML load_ga_options reads back
+// (`facadeslam config --dump optimise`; configs/optimise.yaml is the defaults').
+void write_ga_settings(std::ostream& out, const GaOptions& options);
 
 }  // namespace facadeslam::semantics

@@ -96,6 +96,12 @@ const Case kCases[] = {
     {"frames_corrupt_skipped_are_counted",
      "replay {shared}/zero_byte --camera {cam} --semantics off --sync --out {case}/counted", 3, "never initialised",
      Outputs::absent, "1 corrupt frames skipped", "counted"},
+    // --render where no object can stand (issue 44): the frames are drawn
+    // without it and a line says why, through a strongly distorted camera too.
+    {"render_without_a_map_says_why_through_a_strong_distortion",
+     "replay {seq} --camera {corpus}/camera_yaml/strong_distortion.yaml --semantics off --sync --render {case}/run/ar "
+     "--out {case}/run",
+     3, "render: no virtual object in the view: no frame was tracked", Outputs::absent, "rendered 3 frames", "run"},
     // synth.json against what the folder holds (point 2)
     {"sequence_manifest_mismatch", "replay {shared}/mixed_manifest --semantics off --out {out}", 1,
      "synth.json: says 5 frames but"},

@@ -4,6 +4,7 @@
 // run exactly.
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <cmath>
 #include <limits>
@@ -15,6 +16,7 @@
 #include "core/util/error.hpp"
 #include "semantics/optimiser/ga_operators.hpp"
 #include "semantics/optimiser/genetic_algorithm.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace facadeslam::semantics {
 namespace {
@@ -212,6 +214,43 @@ TEST(GaOptions, EveryShippedConfigLoads) {
   const GaOptions refine = load_ga_options(configs / "optimise-refine.yaml");
   EXPECT_DOUBLE_EQ(refine.weights.average, 0.6);
   EXPECT_DOUBLE_EQ(refine.weights.overall, 0.4);
+}
+
+// configs/optimise.yaml is what `facadeslam config --dump optimise --from`
+// writes of it: every key there, with what it means, from the one table
+// that also reads it.
+TEST(GaOptions, ShippedConfigIsItsOwnDump) {
+  const std::filesystem::path shipped = "configs/optimise.yaml";
+  std::ostringstream dump;
+  write_ga_settings(dump, load_ga_options(shipped));
+  EXPECT_NE(test::read_text(shipped).find(dump.str()), std::string::npos)
+      << "configs/optimise.yaml is not its own dump: rewrite it with "
+         "`facadeslam config --dump optimise --from configs/optimise.yaml`";
+}
+
+// Every setting written is read back to the same value, nested ones included.
+TEST(GaOptions, DumpReadsBackToTheSameSettings) {
+  GaOptions changed;
+  changed.population = 17;
+  changed.selection = Selection::stochastic_universal;
+  changed.crossover = Crossover::uniform;
+  changed.bit_flip_probability = 0.0125;
+  changed.max_samples = 1234;
+  changed.weights.invariance = 0.3;
+  changed.cost_model.moments[2] = 0.5;
+  changed.cost_model.sift[0] = 0.25;
+  std::ostringstream first;
+  write_ga_settings(first, changed);
+  test::TempDir dir;
+  test::write_text(dir / "optimise.yaml", first.str());
+  EXPECT_EQ(load_ga_options(dir / "optimise.yaml"), changed);
+  test::write_text(dir / "bad.yaml", "selection: best\n");
+  try {
+    load_ga_options(dir / "bad.yaml");
+    ADD_FAILURE() << "an unknown selection was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("roulette"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
