@@ -49,13 +49,14 @@ const std::array<cv::Vec3b, 4> kLevelBgr{{{0, 0, 255}, {0, 230, 255}, {0, 200, 0
 // initial keyframes' points, whose plane may be a poor guess.
 constexpr std::size_t kMinPointsForPlane = 80;
 constexpr std::size_t kMinKeyframesForPlane = 3;
-// An object out of the camera's view this many frames running is placed
-// again ahead of the newest keyframe: a camera that walks or drives past it
-// would otherwise leave it behind for the rest of the sequence (street-walk
-// --render-every 4: in view in 28 of 141 rendered frames; after 15 frames
-// 128, after 5 133; KITTI 06 snippet 27 of 47 after 5). Hidden behind the
-// map counts as in view.
+// An object out of the camera's view for this many frames of the sequence,
+// and at least this many rendered frames running, is placed again ahead of
+// the newest keyframe: a camera that walks or drives past it would otherwise
+// leave it behind for the rest of the sequence (street-walk --render-every 4:
+// in view in 28 of 141 rendered frames without; KITTI 06 snippet 10 of 47).
+// Hidden behind the map counts as in view.
 constexpr std::size_t kReplaceAfterFramesOutOfView = 5;
+constexpr std::size_t kReplaceAfterRenderedFramesOutOfView = 2;
 
 cv::Vec3b class_bgr(const SemanticClass& c) { return {c.b, c.g, c.r}; }
 
@@ -118,11 +119,12 @@ struct ReplayRender::Impl {
   std::unordered_map<MapPoint::Id, std::uint32_t> found_before;
   std::vector<Eigen::Vector3d> trajectory_w;
   std::optional<render::ar::VirtualObject> object;
-  Json plane;                               // null until the object is placed
+  Json plane;  // the last placement's; null until the object is placed in the current map
   // Why there is no object yet: the largest map seen, whether a plane was
   // looked for in it and not found (said in the report and on the log).
   std::size_t most_points = 0, most_keyframes = 0, placements = 0;
-  std::optional<std::size_t> last_frame_in_view;
+  std::optional<std::size_t> last_frame_in_view, last_map_reset;
+  std::size_t rendered_out_of_view = 0;
   bool tracked = false, no_plane_found = false;
   std::optional<render::ar::Plane> ground;  // the object stands on it
   double ground_band = 0.0;
@@ -212,6 +214,7 @@ struct ReplayRender::Impl {
       spacing_points = points.size();
     }
     const render::PinholeIntrinsics& intrinsics = ar_view.object_intrinsics();
+    // Off-screen (an empty region): nothing to hide, nothing drawn.
     return render::ar::occluder_depth(occluder_points, T_c_w, intrinsics, spacing, {},
                                       render::ar::object_region(*object, T_c_w, intrinsics));
   }
@@ -254,24 +257,27 @@ struct ReplayRender::Impl {
   // Gives the object up when it has been out of view too long (placed again
   // on the next rendered frame).
   void forget_object_left_behind(std::size_t frame_number, bool in_view) {
+    rendered_out_of_view = in_view ? 0 : rendered_out_of_view + 1;
     if (in_view) last_frame_in_view = frame_number;
-    if (!last_frame_in_view || frame_number < *last_frame_in_view + replay_render_detail::kReplaceAfterFramesOutOfView)
+    if (!last_frame_in_view || rendered_out_of_view < replay_render_detail::kReplaceAfterRenderedFramesOutOfView ||
+        frame_number < *last_frame_in_view + replay_render_detail::kReplaceAfterFramesOutOfView)
       return;
     object.reset();
     ground.reset();
+    rendered_out_of_view = 0;
+    occlusion.break_sequence();  // the next object's hidden share is no change from this one's
   }
 
   // Why no object stands in the view (only asked when none does).
   std::string why_no_object() const {
     using replay_render_detail::kMinKeyframesForPlane, replay_render_detail::kMinPointsForPlane;
-    if (!tracked) return "no frame was tracked";
+    if (!tracked) return "no rendered frame was tracked";
+    const std::string since = last_map_reset ? " since the map reset at frame " + std::to_string(*last_map_reset) : "";
     if (no_plane_found)
-      return "no plane in the map: neither road or pavement points, nor its lowest points, nor any plane of " +
-             std::to_string(render::ar::PlaneFinderOptions{}.min_inliers) + " of its " +
-             std::to_string(most_points) + " points";
+      return "no plane to stand it on among the map's " + std::to_string(most_points) + " points" + since;
     return "the map never had " + std::to_string(kMinPointsForPlane) + " points in " +
            std::to_string(kMinKeyframesForPlane) + " keyframes to look for a plane in (at most " +
-           std::to_string(most_points) + " points, " + std::to_string(most_keyframes) + " keyframes)";
+           std::to_string(most_points) + " points, " + std::to_string(most_keyframes) + " keyframes)" + since;
   }
 
   cv::Mat draw_map_view(const std::vector<PointSnapshot>& points, const std::vector<KeyFrameSnapshot>& keyframes,
@@ -349,6 +355,12 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
     m.plane = Json();
     m.most_points = m.most_keyframes = 0;
     m.no_plane_found = false;
+    m.last_map_reset = frame_number;
+    m.last_frame_in_view.reset();
+    m.rendered_out_of_view = 0;
+    m.spacing = 0.0;  // the new map has its own scale
+    m.spacing_points = 0;
+    m.occlusion.break_sequence();
   }
   std::optional<Eigen::Isometry3d> T_w_c;
   if (report.has_pose) {
@@ -422,7 +434,9 @@ Json ReplayRender::finish(double replay_fps) {
   out["contact_sheet"] = m.sheet.empty() ? Json() : Json((reported / m.sheet_path.filename()).string());
   out["frame_size"] = std::to_string(m.frame_size.width) + "x" + std::to_string(m.frame_size.height);
   out["gl_renderer"] = m.ar_view.gl_renderer();
-  if (m.object) {
+  // The last placement, also when the object was given up out of view
+  // just before the end (it would have been placed again).
+  if (!m.plane.is_null()) {
     out["plane"] = m.plane;
   } else {
     const std::string why = m.why_no_object();
@@ -439,8 +453,9 @@ Json ReplayRender::finish(double replay_fps) {
     out["occlusion_frames_scored"] = m.occlusion.frames();
     out["occlusion_hidden_render"] = m.occlusion.hidden_share_render();
     out["occlusion_hidden_truth"] = m.occlusion.hidden_share_truth();
-    out["occlusion_precision"] = m.occlusion.precision();
-    out["occlusion_recall"] = m.occlusion.recall();
+    const auto or_null = [](const std::optional<double>& v) { return v ? Json(*v) : Json(); };
+    out["occlusion_precision"] = or_null(m.occlusion.precision());
+    out["occlusion_recall"] = or_null(m.occlusion.recall());
     out["occlusion_flicker"] = m.occlusion.flicker_render();
     out["occlusion_flicker_truth"] = m.occlusion.flicker_truth();
   }

@@ -43,11 +43,14 @@ class AugmentedViewDrawer {
     const std::vector<PointSnapshot> points = system.map().snapshot_points();
     const std::vector<KeyFrameSnapshot> keyframes = system.map().snapshot_keyframes();
     std::vector<Eigen::Vector3d> points_w;
+    points_w.reserve(points.size());
     for (const PointSnapshot& p : points) points_w.push_back(p.geometry.p_w);
     if (!object_ && points.size() >= 80 && keyframes.size() >= 3) {
       std::vector<render::ar::PlacementPoint> placement_points;
+      placement_points.reserve(points_w.size());
       for (const Eigen::Vector3d& p : points_w) placement_points.push_back({p, false});
       std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+      keyframes_T_c_w.reserve(keyframes.size());
       for (const KeyFrameSnapshot& kf : keyframes) keyframes_T_c_w.push_back(kf.T_c_w.isometry());
       if (const auto placement = render::ar::place_object(placement_points, keyframes_T_c_w))
         object_ = placement->object;
@@ -58,6 +61,7 @@ class AugmentedViewDrawer {
     content.object = object_;
     if (occlusion_ && object_) {
       std::vector<render::ar::OccluderPoint> occluders;
+      occluders.reserve(points_w.size());
       for (const Eigen::Vector3d& p : points_w) occluders.push_back({p, render::ar::OccluderKind::sparse});
       // As the replay does: the spacing measured again when the map has grown by a tenth.
       if (spacing_ == 0.0 || points.size() > spacing_points_ + spacing_points_ / 10) {
@@ -69,13 +73,16 @@ class AugmentedViewDrawer {
       content.occluder_depth = render::ar::occluder_depth(occluders, T_c_w, intrinsics, spacing_, {},
                                                           render::ar::object_region(*object_, T_c_w, intrinsics));
     }
+    content.points.reserve(points_w.size());
     for (const Eigen::Vector3d& p : points_w) content.points.push_back({p, cv::Vec3b(0, 0, 255)});
     benchmark::DoNotOptimize(ar_view_.render(content).data);
 
     render::MapViewContent map;
     std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+    keyframes_T_c_w.reserve(keyframes.size());
     for (const KeyFrameSnapshot& kf : keyframes) keyframes_T_c_w.push_back(kf.T_c_w.isometry());
-    for (const Eigen::Vector3d& p : points_w) map.points_w.push_back(p.cast<float>());
+    map.points_w.reserve(points_w.size());
+    for (const Eigen::Vector3d& p : points_w) map.points_w.emplace_back(p.cast<float>());
     map.colours_bgr.assign(map.points_w.size(), cv::Vec3b(0, 0, 128));
     map.keyframes_T_c_w = keyframes_T_c_w;
     const render::MapViewCamera camera =

@@ -167,7 +167,7 @@ ArBenchFrame ar_bench_frame(const Camera& camera) {
     const Eigen::Vector3d ray = camera.unproject(Eigen::Vector2d(x, y));
     const Eigen::Vector3d p_w = T_w_c * (ray * (z / ray.z()));
     frame.content.points.push_back({p_w, cv::Vec3b(0, 0, 255)});
-    frame.map_points.push_back(p_w.cast<float>());
+    frame.map_points.emplace_back(p_w.cast<float>());
   }
   // The object 6 m ahead on the ground (the street's ground is z = 0).
   render::ar::VirtualObject object;

@@ -66,16 +66,16 @@ cv::Rect object_region(const VirtualObject& object, const Eigen::Isometry3d& T_c
 
 cv::Mat occluder_depth(const std::vector<OccluderPoint>& points, const Eigen::Isometry3d& T_c_w,
                        const PinholeIntrinsics& intrinsics, double spacing, const OcclusionOptions& options,
-                       cv::Rect region) {
+                       std::optional<cv::Rect> wanted) {
   const cv::Rect image(0, 0, intrinsics.width, intrinsics.height);
-  region = region.empty() ? image : region & image;
+  const cv::Rect region = wanted ? *wanted & image : image;
   cv::Mat depth(intrinsics.height, intrinsics.width, CV_32FC1, cv::Scalar(kNothing));
   if (region.empty()) return depth;
   // Drawn in the region grown by the closing's reach (so that it closes the
   // same gaps as over the whole image), then cut back to the region.
   const int reach = std::max(0, options.surface_close_px);
-  const cv::Rect drawn = cv::Rect(region.x - reach, region.y - reach, region.width + 2 * reach,
-                                  region.height + 2 * reach) & image;
+  const cv::Rect drawn =
+      cv::Rect(region.x - reach, region.y - reach, region.width + 2 * reach, region.height + 2 * reach) & image;
   cv::Mat sparse(drawn.size(), CV_32FC1, cv::Scalar(kNothing));
   cv::Mat surface = sparse.clone();
   bool any_surface = false;

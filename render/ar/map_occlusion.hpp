@@ -11,6 +11,7 @@
 // point spacing seen at the point's depth, so that sparse maps still cover
 // their surfaces and dense ones keep their detail.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -31,11 +32,11 @@ struct OccluderPoint {
 struct OcclusionOptions {
   double surface_radius = 1.5;  // x the point spacing: splats that touch their neighbours
   double sparse_radius = 0.6;   // x the point spacing
-  // A point near the camera covers no more than this: larger splats of the
-  // few points in front of the object hid its base where nothing stands
-  // (24 px: occlusion IoU 0.154 demo, 0.010 street-walk; 8 px: 0.247, 0.042).
+  // A point near the camera covers no more than this: the few points just in
+  // front of the object, grown larger, hid its base where nothing stands
+  // (24 px lowered the occlusion IoU of the demo and street-walk; benchmarks).
   double max_radius_px = 8.0;
-  int surface_close_px = 5;     // gaps of a facade's splats up to this wide are closed
+  int surface_close_px = 5;  // gaps of a facade's splats up to this wide are closed
 };
 
 // The median distance from a point to its nearest neighbour (over at most
@@ -44,11 +45,11 @@ double point_spacing(const std::vector<OccluderPoint>& points);
 
 // CV_32FC1 of the intrinsics' size: the nearest occluder's z per pixel,
 // +infinity where nothing occludes. Only `region` is drawn (the object's box:
-// nothing outside it can hide the object; empty: the whole image), which
-// keeps the cost with the object's size rather than the image's.
+// nothing outside it can hide the object; none: the whole image; empty:
+// nothing), which keeps the cost with the object's size, not the image's.
 cv::Mat occluder_depth(const std::vector<OccluderPoint>& points, const Eigen::Isometry3d& T_c_w,
                        const PinholeIntrinsics& intrinsics, double spacing, const OcclusionOptions& options = {},
-                       cv::Rect region = {});
+                       std::optional<cv::Rect> region = std::nullopt);
 
 // The pixels `object` covers seen through `intrinsics` from T_c_w, as a box
 // clipped to the image (the whole image when a corner is behind the camera,

@@ -79,7 +79,7 @@ PlaneFit ground_anchor(const PlaneFit& fit, std::vector<Eigen::Vector3d>& points
   forward -= forward.dot(n) * n;
   if (forward.norm() < 1e-6) return fit;  // looking straight down or up
   const Eigen::Vector3d foot = camera_w - fit.plane.signed_distance(camera_w) * n;
-  points_w.push_back(foot + median(std::move(depths)) * forward.normalized());
+  points_w.emplace_back(foot + median(std::move(depths)) * forward.normalized());
   anchor.inliers.push_back(points_w.size() - 1);
   return anchor;
 }

@@ -40,17 +40,23 @@ class OcclusionScore {
   std::optional<double> iou() const;
   // Of the object's pixels over all frames, the shares the render and the
   // truth hide; of the render's hidden pixels, the share the truth hides
-  // too (precision), and of the truth's, the share the render hides (recall).
-  double hidden_share_render() const { return share(render_hidden_, object_); }
-  double hidden_share_truth() const { return share(truth_hidden_, object_); }
-  double precision() const { return share(both_, render_hidden_); }
-  double recall() const { return share(both_, truth_hidden_); }
+  // too (precision, nothing while the render hides none), and of the
+  // truth's, the share the render hides (recall, nothing while the truth hides none).
+  double hidden_share_render() const { return object_ > 0 ? render_hidden_ / object_ : 0.0; }
+  double hidden_share_truth() const { return object_ > 0 ? truth_hidden_ / object_ : 0.0; }
+  std::optional<double> precision() const { return share(both_, render_hidden_); }
+  std::optional<double> recall() const { return share(both_, truth_hidden_); }
+  // The next frame shows another object (placed again): its hidden share
+  // is not compared with this one's for flicker.
+  void break_sequence() { last_render_share_.reset(), last_truth_share_.reset(); }
   double flicker_render() const { return changes_ ? flicker_render_ / static_cast<double>(changes_) : 0.0; }
   double flicker_truth() const { return changes_ ? flicker_truth_ / static_cast<double>(changes_) : 0.0; }
 
  private:
   std::size_t frames_ = 0, frames_visible_ = 0, changes_ = 0;
-  static double share(double part, double whole) { return whole > 0 ? part / whole : 0.0; }
+  static std::optional<double> share(double part, double whole) {
+    return whole > 0 ? std::optional<double>(part / whole) : std::nullopt;
+  }
 
   double both_ = 0, either_ = 0, flicker_render_ = 0, flicker_truth_ = 0;
   double object_ = 0, render_hidden_ = 0, truth_hidden_ = 0;

@@ -131,8 +131,7 @@ const SettingsTable<CostModel>& cost_model_settings() {
               "a channel's sigma1..sigma_k for its highest active k = 1, 2, 3");
     t.add("gradient_angles", &C::gradient_angles, "a channel's gradient-angle region means and differences", cost);
     t.add("per_value", &C::per_value,
-          "each active value: what the parts, timed alone, miss together (from the genome with all 185 values)",
-          cost);
+          "each active value: what the parts, timed alone, miss together (from the genome with all 185 values)", cost);
     const Range exponent = Range::closed(0, 4);
     t.add("statistics_exponent", &C::statistics_exponent,
           "per-keypoint cost at radius r = cost at 10 x ((2r+1)/21)^exponent: statistics", exponent);

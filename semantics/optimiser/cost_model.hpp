@@ -25,7 +25,7 @@ namespace facadeslam {
 class ConfigNode;
 template <class Options>
 class SettingsTable;
-}
+}  // namespace facadeslam
 
 namespace facadeslam::semantics {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Every setting of the genetic optimiser (thesis III.8 and IV.4), loaded from
-// a YAML file such as configs/optimise.yaml (the defaults, as
-// `facadeslam config --dump optimise` writes them). Defaults follow the
+// a YAML file such as configs/optimise.yaml (`optimise`'s default: these
+// defaults with the search's sizes scaled down). Defaults follow the
 // issue: 30 genomes x 20 generations, tournament selection, two-point
 // crossover, bit-flip / interchange / reverse mutation, two elites, linear
 // fitness scaling.
@@ -95,7 +95,7 @@ struct GaOptions {
 // Throws Error naming the file and key for unknown keys and bad values.
 GaOptions load_ga_options(const std::filesystem::path& path);
 // Every setting with what it means, as YAML load_ga_options reads back
-// (`facadeslam config --dump optimise`; configs/optimise.yaml is the defaults').
+// (`facadeslam config --dump optimise`; configs/optimise.yaml is its own dump).
 void write_ga_settings(std::ostream& out, const GaOptions& options);
 
 }  // namespace facadeslam::semantics

@@ -100,18 +100,18 @@ TEST_F(ReplayRenderCli, RenderingLeavesTrackingBitForBitTheSameAndWritesItsOutpu
   EXPECT_EQ(render["contact_sheet"], (render_dir / "contact_sheet.png").string());
 }
 
-// Bad input for the object: a map too small to stand it on renders the
-// frames without it, and the report and the log say why.
-TEST_F(ReplayRenderCli, AMapTooSmallForAPlaneRendersWithoutTheObjectAndSaysWhy) {
+// Bad input for the object: with no map to stand it on the frames are
+// rendered without it, and the report and the log say why.
+TEST_F(ReplayRenderCli, WithoutAMapTheFramesAreRenderedWithoutTheObjectAndTheReportSaysWhy) {
   const fs::path out = dir_->path() / "small", render_dir = out / "ar";
   // Two frames: the map never initialises.
   const test::CliResult r = replay(out, "--limit 2 --render " + quoted(render_dir));
   ASSERT_EQ(r.exit_code, 3) << r.err;  // never initialised
   const auto render = nlohmann::json::parse(test::read_file_text(out / "report.json"))["render"];
   EXPECT_EQ(render["plane"]["kind"], "none");
-  EXPECT_EQ(render["plane"]["why"], "no frame was tracked");
+  EXPECT_EQ(render["plane"]["why"], "no rendered frame was tracked");
   EXPECT_EQ(render["frames_with_object"], 0);
-  EXPECT_THAT(r.err, HasSubstr("render: no virtual object in the view: no frame was tracked"));
+  EXPECT_THAT(r.err, HasSubstr("render: no virtual object in the view: no rendered frame was tracked"));
 }
 
 }  // namespace

@@ -101,7 +101,8 @@ const Case kCases[] = {
     {"render_without_a_map_says_why_through_a_strong_distortion",
      "replay {seq} --camera {corpus}/camera_yaml/strong_distortion.yaml --semantics off --sync --render {case}/run/ar "
      "--out {case}/run",
-     3, "render: no virtual object in the view: no frame was tracked", Outputs::absent, "rendered 3 frames", "run"},
+     3, "render: no virtual object in the view: no rendered frame was tracked", Outputs::absent, "rendered 3 frames",
+     "run"},
     // synth.json against what the folder holds (point 2)
     {"sequence_manifest_mismatch", "replay {shared}/mixed_manifest --semantics off --out {out}", 1,
      "synth.json: says 5 frames but"},

@@ -84,6 +84,15 @@ TEST(MapOcclusion, TheObjectsRegionIsItsBoxOnTheImage) {
   Eigen::Isometry3d behind = Eigen::Isometry3d::Identity();
   behind.translation() = Eigen::Vector3d(0, 0, -5.5);  // the camera inside the cube's depth
   EXPECT_EQ(render::ar::object_region(object, behind, kPinhole), cv::Rect(0, 0, 640, 480));
+  // Off to the side: an empty region, and nothing drawn in it.
+  object.T_w_o.translation() = Eigen::Vector3d(30, 0, 5);
+  const cv::Rect off_screen = render::ar::object_region(object, Eigen::Isometry3d::Identity(), kPinhole);
+  EXPECT_TRUE(off_screen.empty());
+  const cv::Mat depth = render::ar::occluder_depth(wall(OccluderKind::surface), Eigen::Isometry3d::Identity(), kPinhole,
+                                                   0.05, {}, off_screen);
+  double nearest = 0.0;
+  cv::minMaxLoc(depth, &nearest);
+  EXPECT_TRUE(std::isinf(nearest));
 }
 
 TEST(MapOcclusion, SparsePointsCoverLessThanASurface) {
@@ -173,11 +182,13 @@ TEST(ObjectPlacement, StandsStraightAheadWhenTheGroundsPointsAreToTheSide) {
 TEST(ObjectPlacement, NothingForFivePointsOrACloudWithoutAPlane) {
   std::vector<Eigen::Isometry3d> keyframes_T_c_w(3, Eigen::Isometry3d::Identity());
   std::vector<render::ar::PlacementPoint> five;
+  five.reserve(5);
   for (int i = 0; i < 5; ++i) five.push_back({{0.1 * i, 1.0, 2.0 + i}, true});
   EXPECT_FALSE(render::ar::place_object(five, keyframes_T_c_w).has_value());
 
   // Points scattered through a ball above the cameras (y down: negative y).
   std::vector<render::ar::PlacementPoint> cloud;
+  cloud.reserve(300);
   unsigned state = 7;
   const auto uniform = [&state] {
     state = state * 1103515245u + 12345u;

@@ -114,6 +114,7 @@ TEST(GaOperators, MutationsFlipOrMoveBits) {
 // Objective: the share of set bits (a known optimum: all ones).
 std::vector<double> ones_share(const std::vector<Genome>& population) {
   std::vector<double> out;
+  out.reserve(population.size());
   for (const Genome& g : population) out.push_back(static_cast<double>(g.bits().count()) / Genome::kBits);
   return out;
 }
@@ -217,28 +218,61 @@ TEST(GaOptions, EveryShippedConfigLoads) {
 }
 
 // configs/optimise.yaml is what `facadeslam config --dump optimise --from`
-// writes of it: every key there, with what it means, from the one table
-// that also reads it.
+// writes of it (below its own header): every key there, with what it
+// means, from the one table that also reads it.
 TEST(GaOptions, ShippedConfigIsItsOwnDump) {
   const std::filesystem::path shipped = "configs/optimise.yaml";
   std::ostringstream dump;
   write_ga_settings(dump, load_ga_options(shipped));
   EXPECT_NE(test::read_text(shipped).find(dump.str()), std::string::npos)
       << "configs/optimise.yaml is not its own dump: rewrite it with "
-         "`facadeslam config --dump optimise --from configs/optimise.yaml`";
+         "`facadeslam config --dump optimise --from configs/optimise.yaml` (keep its header)";
 }
 
 // Every setting written is read back to the same value, nested ones included.
 TEST(GaOptions, DumpReadsBackToTheSameSettings) {
+  // Every setting a value of its own, so that a key bound to a neighbour's
+  // member cannot read back equal.
   GaOptions changed;
   changed.population = 17;
+  changed.generations = 19;
   changed.selection = Selection::stochastic_universal;
+  changed.tournament_size = 4;
   changed.crossover = Crossover::uniform;
+  changed.crossover_probability = 0.81;
   changed.bit_flip_probability = 0.0125;
+  changed.interchange_probability = 0.21;
+  changed.reverse_probability = 0.23;
+  changed.elites = 3;
+  changed.initial_activation_density = 0.07;
+  changed.scaling_multiple = 2.5;
+  changed.plateau_generations = 6;
+  changed.plateau_tolerance = 0.002;
+  changed.validation_share = 0.3;
+  changed.folds = 5;
+  changed.invariance_images = 7;
+  changed.image_cache_mb = 512;
+  changed.max_train_images = 11;
+  changed.max_validation_images = 13;
   changed.max_samples = 1234;
-  changed.weights.invariance = 0.3;
-  changed.cost_model.moments[2] = 0.5;
-  changed.cost_model.sift[0] = 0.25;
+  changed.step = 8;
+  changed.max_trees = 21;
+  changed.max_depth = 15;
+  changed.weights = {0.41, 0.42, 0.3, 0.14, 0.15, 0.016};
+  double cost = 0.001;
+  for (double* value :
+       {&changed.cost_model.equalise, &changed.cost_model.blur_per_tap, &changed.cost_model.colour_plane,
+        &changed.cost_model.angle_plane, &changed.cost_model.edge_distance, &changed.cost_model.gevers_l_plane,
+        &changed.cost_model.gevers_c_plane, &changed.cost_model.geusebroek_plane, &changed.cost_model.position,
+        &changed.cost_model.statistics_plane, &changed.cost_model.hu, &changed.cost_model.affine,
+        &changed.cost_model.gradient_angles, &changed.cost_model.per_value, &changed.cost_model.statistics_exponent,
+        &changed.cost_model.moments_exponent, &changed.cost_model.singular_values_exponent,
+        &changed.cost_model.gradient_angles_exponent})
+    *value = cost += 0.001;
+  for (double& value : changed.cost_model.colour_space) value = cost += 0.001;
+  for (double& value : changed.cost_model.moments) value = cost += 0.001;
+  for (double& value : changed.cost_model.singular_values) value = cost += 0.001;
+  for (double& value : changed.cost_model.sift) value = cost += 0.001;
   std::ostringstream first;
   write_ga_settings(first, changed);
   test::TempDir dir;
