@@ -123,11 +123,14 @@ std::optional<ObjectPlacement> place_object(const std::vector<PlacementPoint>& p
     lowest.push_back(by_height[k].second);
   try_plane(level_ground(points, lowest, up_w, camera_height), true, "the lowest points, below the cameras");
 
-  try_plane(find_dominant_plane(points_w), false, "no ground plane in the map: its dominant plane");
+  // The dominant plane may be level after all: then the object stands on it
+  // as on any ground, straight ahead.
+  const double cos_max_tilt = std::cos(kMaxGroundTiltDeg * std::numbers::pi / 180.0);
+  const std::optional<PlaneFit> dominant = find_dominant_plane(points_w);
+  const bool dominant_level = dominant && std::abs(dominant->plane.normal_w.dot(up_w)) >= cos_max_tilt;
+  try_plane(dominant, dominant_level, "no ground plane in the map: its dominant plane");
   if (placement) {
-    // The dominant plane may be level below the cameras after all.
-    const double cos_tilt = std::abs(placement->fit.plane.normal_w.dot(up_w));
-    placement->on_ground = cos_tilt >= std::cos(kMaxGroundTiltDeg * std::numbers::pi / 180.0);
+    placement->on_ground = std::abs(placement->fit.plane.normal_w.dot(up_w)) >= cos_max_tilt;
     if (placement->on_ground)
       placement->ground_band = kBandShare * std::abs(placement->fit.plane.signed_distance(camera_w));
   }

@@ -127,6 +127,18 @@ TEST(OcclusionScore, IsTheOverlapOfWhatTheRenderAndTheTruthHide) {
   EXPECT_DOUBLE_EQ(exact.flicker_render(), 0.0);
 }
 
+// Three keyframes 1.5 above the ground at y = 0 (y down), upright, looking
+// along z, each 0.5 behind the one before: the newest at z = -1.
+std::vector<Eigen::Isometry3d> upright_cameras() {
+  std::vector<Eigen::Isometry3d> keyframes_T_c_w;
+  for (int k = 0; k < 3; ++k) {
+    Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
+    T_w_c.translation() = Eigen::Vector3d(0.0, -1.5, -0.5 * k);
+    keyframes_T_c_w.push_back(T_w_c.inverse());
+  }
+  return keyframes_T_c_w;
+}
+
 // A street: ground points below level cameras and a facade to the side,
 // larger than the ground: the object stands on the ground all the same, in
 // front of the camera, and the ground points are its band.
@@ -137,12 +149,7 @@ TEST(ObjectPlacement, PrefersTheGroundToALargerFacade) {
       points.push_back({{-2.0 + 0.2 * j, 0.0, 1.0 + 0.5 * i}, false});  // y down: ground at 0
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 20; ++j) points.push_back({{3.0, -0.2 * j, 1.0 + 0.25 * i}, false});  // facade at x = 3
-  std::vector<Eigen::Isometry3d> keyframes_T_c_w;
-  for (int k = 0; k < 3; ++k) {
-    Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
-    T_w_c.translation() = Eigen::Vector3d(0.0, -1.5, -0.5 * k);  // 1.5 above the ground (y down), upright
-    keyframes_T_c_w.push_back(T_w_c.inverse());
-  }
+  const std::vector<Eigen::Isometry3d> keyframes_T_c_w = upright_cameras();
   const auto placement = render::ar::place_object(points, keyframes_T_c_w);
   ASSERT_TRUE(placement.has_value());
   EXPECT_TRUE(placement->on_ground);
@@ -161,12 +168,7 @@ TEST(ObjectPlacement, StandsStraightAheadWhenTheGroundsPointsAreToTheSide) {
   std::vector<render::ar::PlacementPoint> points;
   for (int i = 0; i < 20; ++i)
     for (int j = 0; j < 10; ++j) points.push_back({{6.0 + 0.2 * j, 0.0, 4.0 + 0.5 * i}, true});  // y down
-  std::vector<Eigen::Isometry3d> keyframes_T_c_w;
-  for (int k = 0; k < 3; ++k) {
-    Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
-    T_w_c.translation() = Eigen::Vector3d(0.0, -1.5, -0.5 * k);
-    keyframes_T_c_w.push_back(T_w_c.inverse());
-  }
+  const std::vector<Eigen::Isometry3d> keyframes_T_c_w = upright_cameras();
   const auto placement = render::ar::place_object(points, keyframes_T_c_w);
   ASSERT_TRUE(placement.has_value());
   EXPECT_TRUE(placement->on_ground);
@@ -175,6 +177,21 @@ TEST(ObjectPlacement, StandsStraightAheadWhenTheGroundsPointsAreToTheSide) {
   EXPECT_NEAR(base.y(), 0.0, 1e-9);
   // The median depth of the points in front of the reference camera (at z = -1).
   EXPECT_NEAR(base.z(), -1.0 + 10.0, 0.3);
+}
+
+// The same through the dominant plane: too few points for "the lowest
+// points" (5 % of 100 is under 8), a level dominant plane is ground too.
+TEST(ObjectPlacement, ALevelDominantPlaneIsGroundStraightAheadToo) {
+  std::vector<render::ar::PlacementPoint> points;
+  points.reserve(100);
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) points.push_back({{6.0 + 0.2 * j, 0.0, 4.0 + 1.0 * i}, false});
+  const std::vector<Eigen::Isometry3d> keyframes_T_c_w = upright_cameras();
+  const auto placement = render::ar::place_object(points, keyframes_T_c_w);
+  ASSERT_TRUE(placement.has_value());
+  EXPECT_EQ(placement->reason, "no ground plane in the map: its dominant plane");
+  EXPECT_TRUE(placement->on_ground);
+  EXPECT_NEAR(placement->object.T_w_o.translation().x(), 0.0, 1e-6) << "straight ahead, not beside the road";
 }
 
 // Bad input: five points, or a cloud with no plane and nothing below the
