@@ -5,6 +5,7 @@
 #include <random>
 #include <type_traits>
 
+#include <Eigen/Geometry>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
