@@ -128,9 +128,7 @@ struct ReplayRender::Impl {
   bool tracked = false, no_plane_found = false;
   std::optional<render::ar::Plane> ground;  // the object stands on it
   double ground_band = 0.0;
-  // The map's point spacing for the occluders' splats, refreshed now and then.
-  double spacing = 0.0;
-  std::size_t spacing_points = 0;
+  render::ar::MapSpacing spacing;  // for the occluders' splats
   // Scoring against the true depth (synthetic sequences only).
   std::vector<std::pair<double, fs::path>> truth_depth;
   render::ar::OcclusionScore occlusion;
@@ -207,15 +205,9 @@ struct ReplayRender::Impl {
       occluder_points.push_back({p.geometry.p_w, on_ground ? render::ar::OccluderKind::none
                                                            : replay_render_detail::occluder_kind(p.point->label())});
     }
-    // The spacing changes slowly with the map: measured again when it has
-    // grown by a tenth (a stable splat size, so no flicker from it either).
-    if (spacing == 0.0 || points.size() > spacing_points + spacing_points / 10) {
-      spacing = render::ar::point_spacing(occluder_points);
-      spacing_points = points.size();
-    }
     const render::PinholeIntrinsics& intrinsics = ar_view.object_intrinsics();
     // Off-screen (an empty region): nothing to hide, nothing drawn.
-    return render::ar::occluder_depth(occluder_points, T_c_w, intrinsics, spacing, {},
+    return render::ar::occluder_depth(occluder_points, T_c_w, intrinsics, spacing.of(occluder_points), {},
                                       render::ar::object_region(*object, T_c_w, intrinsics));
   }
 
@@ -358,8 +350,7 @@ void ReplayRender::after_tracking(std::size_t frame_number, const FrameReport& r
     m.last_map_reset = frame_number;
     m.last_frame_in_view.reset();
     m.rendered_out_of_view = 0;
-    m.spacing = 0.0;  // the new map has its own scale
-    m.spacing_points = 0;
+    m.spacing.reset();
     m.occlusion.break_sequence();
   }
   std::optional<Eigen::Isometry3d> T_w_c;

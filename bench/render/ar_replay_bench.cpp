@@ -63,14 +63,9 @@ class AugmentedViewDrawer {
       std::vector<render::ar::OccluderPoint> occluders;
       occluders.reserve(points_w.size());
       for (const Eigen::Vector3d& p : points_w) occluders.push_back({p, render::ar::OccluderKind::sparse});
-      // As the replay does: the spacing measured again when the map has grown by a tenth.
-      if (spacing_ == 0.0 || points.size() > spacing_points_ + spacing_points_ / 10) {
-        spacing_ = render::ar::point_spacing(occluders);
-        spacing_points_ = points.size();
-      }
       const render::PinholeIntrinsics& intrinsics = ar_view_.object_intrinsics();
       const Eigen::Isometry3d T_c_w = report.T_c_w.isometry();
-      content.occluder_depth = render::ar::occluder_depth(occluders, T_c_w, intrinsics, spacing_, {},
+      content.occluder_depth = render::ar::occluder_depth(occluders, T_c_w, intrinsics, spacing_.of(occluders), {},
                                                           render::ar::object_region(*object_, T_c_w, intrinsics));
     }
     content.points.reserve(points_w.size());
@@ -97,8 +92,7 @@ class AugmentedViewDrawer {
   int height_;
   bool occlusion_;
   std::optional<render::ar::VirtualObject> object_;
-  double spacing_ = 0.0;
-  std::size_t spacing_points_ = 0;
+  render::ar::MapSpacing spacing_;  // as the replay measures it
 };
 
 enum class Drawing { none, augmented_view, with_occlusion };

@@ -43,6 +43,26 @@ struct OcclusionOptions {
 // 400 evenly spread points): the map's point spacing. 0 for fewer than 2.
 double point_spacing(const std::vector<OccluderPoint>& points);
 
+// The spacing of a growing map, measured again only when the map has grown
+// by a tenth: it changes slowly, the measure is quadratic in the points, and
+// a stable splat size adds no flicker.
+class MapSpacing {
+ public:
+  double of(const std::vector<OccluderPoint>& points) {
+    if (spacing_ == 0.0 || points.size() > measured_at_ + measured_at_ / 10) {
+      spacing_ = point_spacing(points);
+      measured_at_ = points.size();
+    }
+    return spacing_;
+  }
+  // Another map (a reset): its own scale.
+  void reset() { *this = MapSpacing(); }
+
+ private:
+  double spacing_ = 0.0;
+  std::size_t measured_at_ = 0;
+};
+
 // CV_32FC1 of the intrinsics' size: the nearest occluder's z per pixel,
 // +infinity where nothing occludes. Only `region` is drawn (the object's box:
 // nothing outside it can hide the object; none: the whole image; empty:

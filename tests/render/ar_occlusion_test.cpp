@@ -46,6 +46,25 @@ TEST(MapOcclusion, AFacadesPointsCloseIntoASurfaceAndTheSkyNeverOccludes) {
   EXPECT_EQ(cv::countNonZero(sky < std::numeric_limits<float>::infinity()), 0);
 }
 
+// A growing map's spacing is measured again only when it has grown by a
+// tenth, and afresh after a reset.
+TEST(MapOcclusion, TheSpacingIsMeasuredAgainWhenTheMapHasGrownByATenth) {
+  render::ar::MapSpacing spacing;
+  const auto points = wall(OccluderKind::surface);  // 0.05 apart, 1681 points
+  EXPECT_NEAR(spacing.of(points), 0.05, 1e-9);
+  // Each point gets a twin 0.01 away: first 160 of them (under a tenth)...
+  std::vector<OccluderPoint> grown = points;
+  for (std::size_t i = 0; i < 160; ++i)
+    grown.push_back({points[i].p_w + Eigen::Vector3d(0.01, 0.0, 0.0), points[i].kind});
+  EXPECT_NEAR(spacing.of(grown), 0.05, 1e-9) << "grown by less than a tenth: the spacing kept";
+  // ... then all: measured again, the spacing is the twins'.
+  for (std::size_t i = 160; i < points.size(); ++i)
+    grown.push_back({points[i].p_w + Eigen::Vector3d(0.01, 0.0, 0.0), points[i].kind});
+  EXPECT_NEAR(spacing.of(grown), 0.01, 1e-9);
+  spacing.reset();
+  EXPECT_NEAR(spacing.of(points), 0.05, 1e-9);
+}
+
 // Drawn only in a region, the occluders' depth there is what the whole
 // image's is (the closing reaches across the region's edge alike), and
 // nothing outside it.
