@@ -387,24 +387,15 @@ const SettingsTable<SemanticsOptions>& semantics_settings() {
 }  // namespace
 
 SemanticsOptions load_semantics_options(const std::filesystem::path& path, SemanticsOptions options) {
-  semantics_settings().read(ConfigNode::load_file(path), options);
-  return options;
+  return semantics_settings().load(path, std::move(options));
 }
 
 void write_semantics_settings(std::ostream& out, const SemanticsOptions& options) {
-  SettingsWriter writer(out);
-  semantics_settings().write(writer, options);
+  semantics_settings().write_yaml(out, options);
 }
 
-SlamOptions load_slam_options(const std::filesystem::path& path) {
-  SlamOptions options;
-  slam_settings().read(ConfigNode::load_file(path), options);
-  return options;
-}
+SlamOptions load_slam_options(const std::filesystem::path& path) { return slam_settings().load(path); }
 
-void write_slam_settings(std::ostream& out, const SlamOptions& options) {
-  SettingsWriter writer(out);
-  slam_settings().write(writer, options);
-}
+void write_slam_settings(std::ostream& out, const SlamOptions& options) { slam_settings().write_yaml(out, options); }
 
 }  // namespace facadeslam

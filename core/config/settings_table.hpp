@@ -7,9 +7,11 @@
 // file and its documentation cannot drift apart.
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -89,6 +91,18 @@ class SettingsTable {
 
   void write(SettingsWriter& out, const Options& options) const {
     for (const Entry& entry : entries_) entry.write(out, options);
+  }
+
+  // The YAML file at `path` read over `options` (Error naming the file and key).
+  Options load(const std::filesystem::path& path, Options options = {}) const {
+    read(ConfigNode::load_file(path), options);
+    return options;
+  }
+
+  // Every setting as YAML, each under what it means (`facadeslam config --dump`).
+  void write_yaml(std::ostream& out, const Options& options) const {
+    SettingsWriter writer(out);
+    write(writer, options);
   }
 
  private:

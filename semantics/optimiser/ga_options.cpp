@@ -154,15 +154,8 @@ const SettingsTable<GaOptions>& ga_settings() {
 
 }  // namespace
 
-GaOptions load_ga_options(const std::filesystem::path& path) {
-  GaOptions options;
-  ga_settings().read(ConfigNode::load_file(path), options);
-  return options;
-}
+GaOptions load_ga_options(const std::filesystem::path& path) { return ga_settings().load(path); }
 
-void write_ga_settings(std::ostream& out, const GaOptions& options) {
-  SettingsWriter writer(out);
-  ga_settings().write(writer, options);
-}
+void write_ga_settings(std::ostream& out, const GaOptions& options) { ga_settings().write_yaml(out, options); }
 
 }  // namespace facadeslam::semantics
