@@ -13,7 +13,7 @@ namespace facadeslam {
 
 MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adjuster,
                        std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection_options,
-                       const PointWeight& weight_of) {
+                       const PointWeight& weight_of, GroundGauge* ground) {
   MapBaReport report;
   const auto keyframes = map.keyframes();
   if (keyframes.size() < 2) return report;
@@ -104,6 +104,7 @@ MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adj
   for (std::size_t i = 0; i < problem.keyframes.size(); ++i)
     gauge_fixed = gauge_fixed || (observed[i] && problem.keyframes[i].fixed);
   if (!gauge_fixed) problem.keyframes[first_observed].fixed = true;
+  if (ground) report.ground_keyframes = ground->constrain(problem, /*fixed_too=*/!newest);
 
   report.ba = adjuster.solve(problem, camera);
   // An aborted solve still leaves the last accepted iterate in `problem`

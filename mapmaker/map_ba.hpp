@@ -14,6 +14,7 @@
 #include "core/map/map.hpp"
 #include "mapmaker/ba/ba_selection.hpp"
 #include "mapmaker/ba/bundle_adjuster.hpp"
+#include "mapmaker/ground_gauge.hpp"
 
 namespace facadeslam {
 
@@ -21,6 +22,7 @@ struct MapBaReport {
   BaResult ba;
   std::size_t keyframes = 0, points = 0, observations = 0;
   std::size_t outliers_removed = 0;
+  std::size_t ground_keyframes = 0;  // keyframes held by the ground gauge
 };
 
 // Local BA around `newest` (with `selection` neighbours) when given,
@@ -29,9 +31,11 @@ struct MapBaReport {
 // [0, 1] (none: 1 for all); it is asked once per point per call. A point of
 // weight 0 (a moving class) is left out altogether: out of the selection, the
 // solve and the outlier test. A weight outside [0, 1] throws, naming the point.
+// `ground`, when given, adds its ground observations (the free keyframes'
+// in a local BA, every keyframe's in a global one).
 using PointWeight = std::function<double(const MapPoint&)>;
 MapBaReport adjust_map(Map& map, const Camera& camera, const BundleAdjuster& adjuster,
                        std::optional<KeyFrame::Id> newest, const LocalBaOptions& selection = {},
-                       const PointWeight& weight_of = {});
+                       const PointWeight& weight_of = {}, GroundGauge* ground = nullptr);
 
 }  // namespace facadeslam

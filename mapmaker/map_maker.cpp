@@ -28,7 +28,12 @@ constexpr KeyFrame::Id kSingleViewGraceKeyframes = 3;
 
 MapMaker::MapMaker(Camera camera, Map& map, KeyFrameQueue& queue, MapMakerOptions options,
                    KeyFramePointsQueue* new_points)
-    : camera_(camera), map_(map), queue_(queue), options_(std::move(options)), new_points_(new_points) {}
+    : camera_(camera),
+      map_(map),
+      queue_(queue),
+      options_(std::move(options)),
+      new_points_(new_points),
+      ground_(options_.ground_gauge) {}
 
 void MapMaker::hand_off(const std::shared_ptr<KeyFrame>& keyframe, const NewPoints* only) {
   if (!new_points_ || !keyframe) return;
@@ -84,7 +89,7 @@ std::optional<SE3d> MapMaker::initialise(const InitialViews& views) {
 
   const Stopwatch t0;
   const MapBaReport ba =
-      adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt, {}, ba_point_weight());
+      adjust_map(map_, camera_, BundleAdjuster(options_.global_ba), std::nullopt, {}, ba_point_weight(), &ground_);
   remove_outlier_points();
   update_depth_stats(*kf0);
   update_depth_stats(*kf1);
@@ -201,8 +206,19 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
     created.append(std::move(more));
   }
 
+  if (!ground_.reference()) {
+    ground_.try_reference(ground_views());
+    if (const auto& ground = ground_.reference())
+      spdlog::info(
+          "ground under the first {} keyframes: the camera {:.3f} above it (normal {:.3f} {:.3f} {:.3f}, {} points)",
+          map_.keyframe_count(), ground->height, ground->normal_c.x(), ground->normal_c.y(), ground->normal_c.z(),
+          ground->inliers);
+  }
   const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options_.local_ba), kf->id(),
-                                    options_.local_ba_selection, ba_point_weight());
+                                    options_.local_ba_selection, ba_point_weight(), &ground_);
+  if (const auto& ground = ground_.reference(); ground && ground_.heights().contains(kf->id()))
+    spdlog::debug("keyframe {} (frame {}): ground at {:.3f} x the reference height", kf->id(), candidate.frame.index,
+                  ground_.heights().at(kf->id()) / ground->height);
   remove_outlier_points();
   update_depth_stats(*kf);
   {
@@ -212,6 +228,8 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
     stats_.local_ba_runs += 1;
     stats_.local_ba_ms += ba.ba.time_ms;
     stats_.keyframe_ms += t0.elapsed_ms();
+    stats_.ground = ground_.reference();
+    stats_.ground_held_local_ba_runs += ba.ground_keyframes > 0 ? 1 : 0;
   }
   map_changed_since_global_ba_ = true;
   ++keyframes_since_global_ba_;
@@ -324,7 +342,8 @@ void MapMaker::run_global_ba() {
   options.on_iteration = [this](int) {
     if (!queue_.empty()) abort_global_ba_ = true;
   };
-  const MapBaReport ba = adjust_map(map_, camera_, BundleAdjuster(options), std::nullopt, {}, ba_point_weight());
+  const MapBaReport ba =
+      adjust_map(map_, camera_, BundleAdjuster(options), std::nullopt, {}, ba_point_weight(), &ground_);
   std::lock_guard lock(stats_mutex_);
   if (ba.ba.aborted) {
     ++stats_.global_ba_aborted;
@@ -385,7 +404,25 @@ void MapMaker::stop() {
   done_changed_.notify_all();
 }
 
+std::vector<GroundView> MapMaker::ground_views() const {
+  std::vector<GroundView> views;
+  const auto keyframes = map_.keyframes();
+  map_.read([&](const MapView& view) {
+    for (const auto& kf : keyframes) {
+      GroundView& ground = views.emplace_back(GroundView{kf->T_c_w(), {}});
+      for (const auto& [id, m] : kf->measurements())
+        if (const auto p = view.point(id); p && !p->is_bad()) ground.points_c.push_back(kf->T_c_w() * p->position());
+    }
+  });
+  return views;
+}
+
 void MapMaker::reset() {
+  ground_.reset();
+  {
+    std::lock_guard lock(stats_mutex_);
+    stats_.ground.reset();
+  }
   map_changed_since_global_ba_ = false;
   keyframes_since_global_ba_ = 0;
 }

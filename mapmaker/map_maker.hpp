@@ -48,6 +48,10 @@ struct MapMakerStats {
   std::size_t keyframes_culled = 0;
   std::size_t local_ba_runs = 0, global_ba_runs = 0, global_ba_aborted = 0;
   double local_ba_ms = 0, global_ba_ms = 0, keyframe_ms = 0;  // totals
+  // The ground gauge (ground_gauge.hpp) of the current map, if it has one,
+  // and the local BAs in which it held at least one keyframe.
+  std::optional<GroundReference> ground;
+  std::size_t ground_held_local_ba_runs = 0;
 };
 
 class MapMaker {
@@ -104,12 +108,15 @@ class MapMaker {
   // Queues the keyframe's measurements (only those of `only`'s points, if
   // given) for the semantic worker.
   void hand_off(const std::shared_ptr<KeyFrame>& keyframe, const NewPoints* only = nullptr);
+  // Each keyframe's pose and measured points in its camera frame (the ground gauge's reference).
+  std::vector<GroundView> ground_views() const;
 
   Camera camera_;
   Map& map_;
   KeyFrameQueue& queue_;
   MapMakerOptions options_;
   KeyFramePointsQueue* new_points_;
+  GroundGauge ground_;  // map maker thread only
 
   std::thread thread_;
   std::atomic<bool> stopping_{false};

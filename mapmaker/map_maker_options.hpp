@@ -8,6 +8,7 @@
 #include "mapmaker/ba/bundle_adjuster.hpp"
 #include "mapmaker/depth_prior_points.hpp"
 #include "mapmaker/epipolar_partner.hpp"
+#include "mapmaker/ground_gauge.hpp"
 #include "mapmaker/keyframe_culling.hpp"
 
 namespace facadeslam {
@@ -65,6 +66,8 @@ struct MapMakerOptions {
   double outlier_max_found_ratio = 0.2;
   // Redundant keyframes are culled after each new one (keyframe_culling.hpp).
   KeyFrameCullingOptions culling;
+  // The camera's height above the road holds the scale (ground_gauge.hpp).
+  GroundGaugeOptions ground_gauge;
   // Synchronous mode: a global BA after every this many keyframes (the
   // threaded map maker runs it whenever it is idle instead).
   int sync_global_ba_every = 5;

@@ -172,6 +172,23 @@ SettingsTable<KeyFrameCullingOptions> culling_settings() {
   return t;
 }
 
+SettingsTable<GroundGaugeOptions> ground_gauge_settings() {
+  using G = GroundGaugeOptions;
+  SettingsTable<G> t;
+  t.add("enabled", &G::enabled,
+        "hold the camera's height above the road found under the first keyframes (a vehicle's camera)");
+  t.add("keyframe_sigma", &G::keyframe_sigma, "how far a keyframe's height may stray from it (x the height)",
+        Range::closed(1e-4, 1));
+  t.add("point_sigma", &G::point_sigma, "a ground point's own height noise in the robust loss (x the height)",
+        Range::closed(1e-4, 1));
+  t.add("min_inliers", &G::min_inliers, "a keyframe's ground needs this many points ...", Range::closed(3, 10000));
+  t.add("inlier_band", &G::inlier_band, "... within this of their median height (x the height) ...",
+        Range::closed(1e-3, 0.5));
+  t.add("search_window", &G::search_window, "... which is within this of the keyframe's last height (x the height)",
+        Range::closed(0.01, 0.9));
+  return t;
+}
+
 SettingsTable<MapMakerOptions> mapmaker_settings() {
   using M = MapMakerOptions;
   SettingsTable<M> t;
@@ -193,6 +210,8 @@ SettingsTable<MapMakerOptions> mapmaker_settings() {
   t.add("outlier_max_found_ratio", &M::outlier_max_found_ratio,
         "... and found less than this share of the time is removed", Range::closed(0, 1));
   t.add("culling", &M::culling, culling_settings());
+  t.add("ground_gauge", &M::ground_gauge, ground_gauge_settings(),
+        "the monocular scale held by the camera's height above the road");
   return t;
 }
 

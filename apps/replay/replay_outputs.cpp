@@ -148,6 +148,17 @@ Json mapping_summary(const MapMakerStats& stats) {
   mapping["local_ba_runs"] = stats.local_ba_runs;
   mapping["global_ba_runs"] = stats.global_ba_runs;
   mapping["global_ba_aborted"] = stats.global_ba_aborted;
+  // The camera's height above the road holding the scale (a vehicle's
+  // camera), in map units, or null.
+  Json ground = nullptr;
+  if (stats.ground) {
+    ground = Json::object();
+    ground["height"] = stats.ground->height;
+    ground["normal_in_camera"] = {stats.ground->normal_c.x(), stats.ground->normal_c.y(), stats.ground->normal_c.z()};
+    ground["reference_points"] = stats.ground->inliers;
+    ground["local_ba_runs_held"] = stats.ground_held_local_ba_runs;
+  }
+  mapping["ground_gauge"] = ground;
   return mapping;
 }
 

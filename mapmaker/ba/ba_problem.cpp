@@ -34,6 +34,22 @@ void validate_scale_anchor(const BaProblem& problem, const BaScaleAnchor& anchor
     fail_problem("the scale anchor's keyframes have the same camera centre: their distance cannot fix the scale");
 }
 
+void validate_ground(const BaProblem& problem) {
+  for (std::size_t i = 0; i < problem.ground.size(); ++i) {
+    const BaGroundObservation& g = problem.ground[i];
+    const std::string name = "ground observation " + std::to_string(i);
+    if (g.keyframe >= problem.keyframes.size() || g.point >= problem.points.size())
+      fail_problem(name + " refers to keyframe index " + std::to_string(g.keyframe) + " and point index " +
+                   std::to_string(g.point) + ", expected below " + std::to_string(problem.keyframes.size()) + " and " +
+                   std::to_string(problem.points.size()));
+    if (!g.normal_c.allFinite() || std::abs(g.normal_c.norm() - 1.0) > 1e-6)
+      fail_problem(name + " has a normal that is not a unit vector");
+    for (const double value : {g.height, g.sigma, g.weight})
+      if (!(std::isfinite(value) && value > 0.0))
+        fail_problem(name + " has a height, sigma or weight that is not finite and > 0");
+  }
+}
+
 }  // namespace
 
 void validate_ba_problem(const BaProblem& problem) {
@@ -70,6 +86,7 @@ void validate_ba_problem(const BaProblem& problem) {
     fail_problem(
         "no keyframe or point taking part is fixed: fix at least one keyframe (normally the map's "
         "first) to remove the gauge freedom");
+  validate_ground(problem);
   if (problem.scale_anchor) validate_scale_anchor(problem, *problem.scale_anchor);
 }
 

@@ -58,10 +58,25 @@ struct BaScaleAnchor {
   std::size_t reference = 0;  // index into BaProblem::keyframes
 };
 
+// A point on the ground under a keyframe: its height along the ground's
+// normal in the keyframe's camera frame should be the camera's height above
+// the ground (a camera mounted on a vehicle keeps it), which fixes the
+// monocular scale locally (mapmaker/ground_gauge.hpp). Residual:
+//   r = (normal_c . (T_c_w * p_w) - height) / sigma,  robust loss x weight.
+struct BaGroundObservation {
+  std::size_t keyframe = 0;           // index into BaProblem::keyframes
+  std::size_t point = 0;              // index into BaProblem::points
+  Eigen::Vector3d normal_c{0, 1, 0};  // unit, pointing down from the camera
+  double height = 1.0;                // > 0, map units
+  double sigma = 0.05;                // > 0, map units
+  double weight = 1.0;                // > 0: its share of the keyframe's prior
+};
+
 struct BaProblem {
   std::vector<BaKeyFrame> keyframes;
   std::vector<BaPoint> points;
   std::vector<BaObservation> observations;
+  std::vector<BaGroundObservation> ground;
   std::optional<BaScaleAnchor> scale_anchor;
 };
 
@@ -71,6 +86,8 @@ inline constexpr int kMaxBaLevel = 15;
 // Throws Error naming the first offending element unless: every observation
 // indexes an existing keyframe and point, has a finite pixel, a level in
 // [0, kMaxBaLevel] and a weight in (0, 1]; every pose and point is finite;
+// every ground observation indexes an existing keyframe and point, has a
+// unit normal and finite positive height, sigma and weight;
 // and the scale anchor, if any, names two distinct keyframes, the reference
 // fixed, the other free, with distinct centres.
 void validate_ba_problem(const BaProblem& problem);

@@ -16,6 +16,7 @@
 #include "core/lie/manifolds.hpp"
 #include "core/util/error.hpp"
 #include "mapmaker/ba/centre_distance_manifold.hpp"
+#include "mapmaker/ba/ground_height_cost.hpp"
 #include "mapmaker/ba/reprojection_cost.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -135,6 +136,16 @@ void add_residuals(ceres::Problem& ceres_problem, const BaProblem& problem, cons
     ceres_problem.AddResidualBlock(cost, obs_loss, blocks.poses[obs.keyframe].data(), blocks.points[obs.point].data());
     blocks.pose_used[obs.keyframe] = 1;
     blocks.point_used[obs.point] = 1;
+  }
+  for (const BaGroundObservation& g : problem.ground) {
+    if (problem.keyframes[g.keyframe].fixed && problem.points[g.point].fixed) continue;
+    auto* cost = new ceres::AutoDiffCostFunction<GroundHeightCost, 1, kSe3ParamSize, 3>(
+        new GroundHeightCost(g.normal_c, g.height, g.sigma));
+    scaled_losses.push_back(std::make_unique<ceres::ScaledLoss>(loss, g.weight, ceres::DO_NOT_TAKE_OWNERSHIP));
+    ceres_problem.AddResidualBlock(cost, scaled_losses.back().get(), blocks.poses[g.keyframe].data(),
+                                   blocks.points[g.point].data());
+    blocks.pose_used[g.keyframe] = 1;
+    blocks.point_used[g.point] = 1;
   }
 }
 

@@ -4,9 +4,9 @@
 // must hold without labels, and labels may only make it better: both runs
 // track at least 98 % of the frames after initialisation (relocalised frames
 // do not count), reset no map, and keep the ATE (Sim3) of the final
-// trajectory over at least 95 % of the frames within 1.5 % of the path.
-// (The issue asks 1 %: the scale drifts by about +25 % over the 300 frames,
-// mostly in the two turns; docs/benchmarks.md has the figures.)
+// trajectory over at least 95 % of the frames within 1 % of the path. The
+// ground gauge (mapmaker/ground_gauge.hpp) carries the scale through the
+// turns: without it the scale grows by about 20 % and the ATE is 1.1 %.
 // Synchronous mode, fixed seed: reproducible. Figures go to stdout.
 #include <cstdio>
 #include <string>
@@ -29,6 +29,7 @@ namespace fs = std::filesystem;
 
 struct DrivingRun {
   std::size_t frames = 0, after_initialisation = 0, tracked = 0, relocalised = 0, resets = 0;
+  std::size_t ground_held = 0;  // local BAs in which the ground gauge held a keyframe
   TrajectoryEvaluation ate;
   KittiRelativeError relative;  // KITTI's devkit figures, after the ATE's Sim(3) alignment
 };
@@ -49,6 +50,9 @@ DrivingRun drive(const fs::path& dir, SlamOptions options) {
     run.relocalised += f.status == FrameStatus::relocalised;
   }
   run.resets = system.map_resets();
+  const MapMakerStats mapping = system.map_maker_stats();
+  EXPECT_TRUE(mapping.ground) << "no ground gauge: the road under the first keyframes was not found";
+  run.ground_held = mapping.ground_held_local_ba_runs;
   const Trajectory gt = read_trajectory(dir / "groundtruth.txt"), estimate = system.final_trajectory();
   run.ate = evaluate_trajectory(gt, estimate, {});
   run.relative = kitti_relative_error_after_alignment(gt, estimate, run.ate);
@@ -60,16 +64,17 @@ void expect_driven(const std::string& name, const DrivingRun& run) {
       run.after_initialisation ? static_cast<double>(run.tracked) / static_cast<double>(run.after_initialisation) : 0.0;
   std::printf(
       "[  FIGURES ] %s: %zu frames, %zu after initialisation, %zu tracked (%.1f %%), %zu relocalised, "
-      "%zu map resets, ATE (Sim3) %.3f m = %.3f %% of the %.1f m path over %zu poses\n",
+      "%zu map resets, ATE (Sim3) %.3f m = %.3f %% of the %.1f m path over %zu poses; the ground gauge held %zu "
+      "local BAs\n",
       name.c_str(), run.frames, run.after_initialisation, run.tracked, 100.0 * share, run.relocalised, run.resets,
-      run.ate.ate_rmse_m, run.ate.ate_percent_of_path, run.ate.path_length_m, run.ate.pairs);
+      run.ate.ate_rmse_m, run.ate.ate_percent_of_path, run.ate.path_length_m, run.ate.pairs, run.ground_held);
   for (const KittiLengthError& e : run.relative.per_length)
     std::printf("[  FIGURES ] %s: KITTI relative error over %.0f m (%zu segments): %.2f %%, %.3f deg/100 m\n",
                 name.c_str(), e.length_m, e.pairs, e.translation_percent, e.rotation_deg_per_100m);
   EXPECT_GE(share, 0.98) << name;
   EXPECT_EQ(run.resets, 0u) << name;
   EXPECT_GE(static_cast<double>(run.ate.pairs), 0.95 * static_cast<double>(run.frames)) << name;
-  EXPECT_LE(run.ate.ate_percent_of_path, 1.5) << name;
+  EXPECT_LE(run.ate.ate_percent_of_path, 1.0) << name;
   ASSERT_FALSE(run.relative.per_length.empty()) << name << ": " << run.relative.no_segments_reason();
   EXPECT_EQ(run.relative.per_length.front().length_m, 100.0);
 }
