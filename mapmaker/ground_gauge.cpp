@@ -104,11 +104,9 @@ bool moved_like_a_vehicle(const std::vector<GroundView>& views, const Eigen::Vec
 
 std::optional<GroundReference> fit_ground_reference(const std::vector<GroundView>& views,
                                                     const GroundGaugeOptions& options) {
-  std::vector<std::vector<Eigen::Vector3d>> points_c;
-  for (const GroundView& view : views) points_c.push_back(view.points_c);
   std::vector<PooledPoint> pooled;
-  for (std::size_t k = 0; k < points_c.size(); ++k)
-    for (const Eigen::Vector3d& p : points_c[k])
+  for (std::size_t k = 0; k < views.size(); ++k)
+    for (const Eigen::Vector3d& p : views[k].points_c)
       if (p.allFinite() && p.z() > 0.0 && p.y() > 0.0) pooled.push_back({p, k});
   if (pooled.size() < options.min_reference_inliers) return std::nullopt;
 
@@ -134,7 +132,7 @@ std::optional<GroundReference> fit_ground_reference(const std::vector<GroundView
   if (!best || best->inliers.size() < options.min_reference_inliers) return std::nullopt;
   // The plane must be the ground under several keyframes, not one patch of
   // one of them.
-  std::vector<std::size_t> per_keyframe(points_c.size(), 0);
+  std::vector<std::size_t> per_keyframe(views.size(), 0);
   for (const std::size_t i : best->inliers) ++per_keyframe[pooled[i].keyframe];
   const auto supporting =
       std::count_if(per_keyframe.begin(), per_keyframe.end(), [&](std::size_t n) { return n >= options.min_inliers; });

@@ -38,7 +38,7 @@ std::vector<Eigen::Vector3d> street(std::mt19937& rng, double scale = 1.0, int r
   std::normal_distribution<double> noise(0.0, 0.01);
   std::vector<Eigen::Vector3d> points;
   auto at = [&](double a, double l, double height_below) {
-    points.push_back(scale * (a * forward + l * lateral + (height_below + noise(rng)) * n));
+    points.emplace_back(scale * (a * forward + l * lateral + (height_below + noise(rng)) * n));
   };
   for (int i = 0; i < road; ++i) at(ahead(rng), across(rng), kHeight);
   for (int i = 0; i < pavement; ++i) at(ahead(rng), 4.0 + 0.5 * across(rng) / 3.0, kHeight - 0.15);
@@ -52,6 +52,7 @@ std::vector<GroundView> driving_views(std::mt19937& rng, double scale, int road 
   const Eigen::Vector3d n = tilted_normal();
   const Eigen::Vector3d forward = (Eigen::Vector3d::UnitZ() - n.z() * n).normalized();
   std::vector<GroundView> views;
+  views.reserve(4);
   for (int k = 0; k < 4; ++k) views.push_back({SE3d(SO3d(), -scale * k * forward), street(rng, scale, road, pavement)});
   return views;
 }

@@ -34,7 +34,7 @@ struct DrivingRun {
   KittiRelativeError relative;  // KITTI's devkit figures, after the ATE's Sim(3) alignment
 };
 
-DrivingRun drive(const fs::path& dir, SlamOptions options) {
+DrivingRun drive(const fs::path& dir, const SlamOptions& options) {
   System system(load_camera(dir / "camera.yaml"), options);
   test::SlamRunLog log;
   auto source = open_sequence(dir / "rgb.txt", SequenceOptions{});
