@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <spdlog/spdlog.h>
 
 namespace facadeslam {
 namespace {
@@ -91,13 +92,22 @@ bool moved_like_a_vehicle(const std::vector<GroundView>& views, const Eigen::Vec
   const SE3d& first = views.front().T_c_w;
   const Eigen::Vector3d travel_c = first * views.back().T_c_w.inverse().translation();
   if (travel_c.norm() <= 0.0 ||
-      travel_c.z() < travel_c.norm() * std::cos(options.max_motion_angle_deg * std::numbers::pi / 180.0))
+      travel_c.z() < travel_c.norm() * std::cos(options.max_motion_angle_deg * std::numbers::pi / 180.0)) {
+    spdlog::debug("no ground gauge from {} keyframes: they did not travel along the optical axis", views.size());
     return false;
+  }
   for (const GroundView& view : views) {
     const Eigen::Vector3d n_w = view.T_c_w.so3().inverse() * normal_c;
-    if (n_w.dot(normal_w) < min_cos) return false;
+    if (n_w.dot(normal_w) < min_cos) {
+      spdlog::debug("no ground gauge from {} keyframes: the cameras tilted over the plane", views.size());
+      return false;
+    }
     const double centre_height = offset - normal_w.dot(view.T_c_w.inverse().translation());
-    if (std::abs(centre_height - height) > options.max_height_spread * height) return false;
+    if (std::abs(centre_height - height) > options.max_height_spread * height) {
+      spdlog::debug("no ground gauge from {} keyframes: the cameras were not at one height over the plane",
+                    views.size());
+      return false;
+    }
   }
   return true;
 }
@@ -129,14 +139,22 @@ std::optional<GroundReference> fit_ground_reference(const std::vector<GroundView
   for (int round = 0; round < 2 && best; ++round)
     if (auto refined = refit(pooled, best->inliers, options); refined && refined->inliers.size() >= 3)
       best = std::move(refined);
-  if (!best || best->inliers.size() < options.min_reference_inliers) return std::nullopt;
+  if (!best || best->inliers.size() < options.min_reference_inliers) {
+    spdlog::debug("no ground gauge from {} keyframes: no plane below the cameras with {} points ({} at most)",
+                  views.size(), options.min_reference_inliers, best ? best->inliers.size() : 0);
+    return std::nullopt;
+  }
   // The plane must be the ground under several keyframes, not one patch of
   // one of them.
   std::vector<std::size_t> per_keyframe(views.size(), 0);
   for (const std::size_t i : best->inliers) ++per_keyframe[pooled[i].keyframe];
   const auto supporting =
       std::count_if(per_keyframe.begin(), per_keyframe.end(), [&](std::size_t n) { return n >= options.min_inliers; });
-  if (supporting < 2 || !moved_like_a_vehicle(views, best->normal, best->height, options)) return std::nullopt;
+  if (supporting < 2) {
+    spdlog::debug("no ground gauge from {} keyframes: the plane lies under fewer than 2 of them", views.size());
+    return std::nullopt;
+  }
+  if (!moved_like_a_vehicle(views, best->normal, best->height, options)) return std::nullopt;
   return GroundReference{best->normal, views.front().T_c_w.so3().inverse() * best->normal, best->height,
                          best->inliers.size()};
 }
