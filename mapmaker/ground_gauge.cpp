@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <random>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <spdlog/spdlog.h>
+
+#include "core/util/angles.hpp"
 
 namespace facadeslam {
 namespace {
@@ -43,7 +44,7 @@ struct PlaneFit {
 };
 
 bool plausible_normal(const Eigen::Vector3d& n, const GroundGaugeOptions& options) {
-  return n.allFinite() && n.y() >= std::cos(options.max_tilt_deg * std::numbers::pi / 180.0);
+  return n.allFinite() && n.y() >= std::cos(deg_to_rad(options.max_tilt_deg));
 }
 
 std::vector<std::size_t> plane_inliers(const std::vector<PooledPoint>& pooled, const Eigen::Vector3d& n, double height,
@@ -78,21 +79,18 @@ std::optional<PlaneFit> refit(const std::vector<PooledPoint>& pooled, const std:
   return PlaneFit{n, height, plane_inliers(pooled, n, height, options)};
 }
 
-}  // namespace
-
 // Did the cameras move like a vehicle's over the plane (normal_c, height)?
 // Forward, the normal the same in the world from every keyframe, the centres at the
 // same height above it.
 bool moved_like_a_vehicle(const std::vector<GroundView>& views, const Eigen::Vector3d& normal_c, double height,
                           const GroundGaugeOptions& options) {
-  const double min_cos = std::cos(options.max_normal_spread_deg * std::numbers::pi / 180.0);
-  const Eigen::Vector3d normal_w = views.front().T_c_w.so3().inverse() * normal_c;
-  // The plane in the world: normal_w . x = offset, from the first keyframe.
-  const double offset = normal_w.dot(views.front().T_c_w.inverse().translation()) + height;
+  const double min_cos = std::cos(deg_to_rad(options.max_normal_spread_deg));
   const SE3d& first = views.front().T_c_w;
+  const Eigen::Vector3d normal_w = first.so3().inverse() * normal_c;
+  // The plane in the world: normal_w . x = offset, from the first keyframe.
+  const double offset = normal_w.dot(first.inverse().translation()) + height;
   const Eigen::Vector3d travel_c = first * views.back().T_c_w.inverse().translation();
-  if (travel_c.norm() <= 0.0 ||
-      travel_c.z() < travel_c.norm() * std::cos(options.max_motion_angle_deg * std::numbers::pi / 180.0)) {
+  if (travel_c.norm() <= 0.0 || travel_c.z() < travel_c.norm() * std::cos(deg_to_rad(options.max_motion_angle_deg))) {
     spdlog::debug("no ground gauge from {} keyframes: they did not travel along the optical axis", views.size());
     return false;
   }
@@ -111,6 +109,8 @@ bool moved_like_a_vehicle(const std::vector<GroundView>& views, const Eigen::Vec
   }
   return true;
 }
+
+}  // namespace
 
 std::optional<GroundReference> fit_ground_reference(const std::vector<GroundView>& views,
                                                     const GroundGaugeOptions& options) {
@@ -206,13 +206,13 @@ std::optional<GroundCluster> find_ground(const std::vector<Eigen::Vector3d>& poi
   return cluster;
 }
 
-void GroundGauge::try_reference(const std::vector<GroundView>& views) {
-  if (!options_.enabled || reference_ || gave_up_ || views.size() < options_.reference_keyframes) return;
-  if (views.size() > options_.max_reference_keyframes) {
+void GroundGauge::try_reference(std::size_t keyframes, const std::function<std::vector<GroundView>()>& views) {
+  if (!options_.enabled || reference_ || gave_up_ || keyframes < options_.reference_keyframes) return;
+  if (keyframes > options_.max_reference_keyframes) {
     gave_up_ = true;
     return;
   }
-  reference_ = fit_ground_reference(views, options_);
+  reference_ = fit_ground_reference(views(), options_);
 }
 
 std::size_t GroundGauge::constrain(BaProblem& problem, bool fixed_too) {
@@ -228,7 +228,7 @@ std::size_t GroundGauge::constrain(BaProblem& problem, bool fixed_too) {
   const double point_sigma = options_.point_sigma * reference_->height;
   const double share =
       (options_.point_sigma / options_.keyframe_sigma) * (options_.point_sigma / options_.keyframe_sigma);
-  const double min_cos_tilt = std::cos(options_.max_keyframe_tilt_deg * std::numbers::pi / 180.0);
+  const double min_cos_tilt = std::cos(deg_to_rad(options_.max_keyframe_tilt_deg));
   std::size_t constrained = 0;
   std::vector<Eigen::Vector3d> points_c(candidates.size());
   for (std::size_t k = 0; k < problem.keyframes.size(); ++k) {

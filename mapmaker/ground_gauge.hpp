@@ -19,14 +19,17 @@
 //    keyframe (turning about it only) and the camera centres at the same
 //    height above it. Hand-held cameras (tilting,
 //    raised and lowered) and cameras with no such plane get no gauge.
-//  * per keyframe: its points in the lane ahead of it (the reference normal,
-//    fixed: a ground fitted per keyframe tilts through parked cars and far
-//    points) whose heights below the camera cluster within inlier_band of
-//    the expected height; the densest cluster wins. The bundle adjustment
+//  * per keyframe: the bundle adjustment's points (its own and its
+//    neighbours': a keyframe alone sees few road corners) in the lane ahead
+//    of it (the reference normal, fixed: a ground fitted per keyframe tilts
+//    through parked cars and far points) whose heights below the camera
+//    cluster within inlier_band of the expected height; the densest cluster
+//    wins. Keyframes tilted from the reference are not held. The bundle adjustment
 //    then holds those points at the reference height below the keyframe
 //    with sigma (BaGroundObservation), robustly.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -109,9 +112,11 @@ class GroundGauge {
   const GroundGaugeOptions& options() const { return options_; }
   const std::optional<GroundReference>& reference() const { return reference_; }
 
-  // Tries to fit the reference (when enabled, not yet fitted, and the map has
-  // between reference_keyframes and max_reference_keyframes keyframes).
-  void try_reference(const std::vector<GroundView>& views);
+  // Tries to fit the reference when enabled, not yet fitted, and the map's
+  // `keyframes` are between reference_keyframes and max_reference_keyframes
+  // (once beyond, it stops trying). `views` (one per keyframe) is asked for
+  // only then: building them transforms every measurement of the map.
+  void try_reference(std::size_t keyframes, const std::function<std::vector<GroundView>()>& views);
 
   // Adds ground observations to `problem` for its keyframes (free ones only
   // unless `fixed_too`) whose ground is found; returns how many keyframes.

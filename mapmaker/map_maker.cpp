@@ -207,7 +207,7 @@ void MapMaker::add_keyframe(KeyFrameCandidate candidate) {
   }
 
   if (!ground_.reference()) {
-    ground_.try_reference(ground_views());
+    ground_.try_reference(map_.keyframe_count(), [this] { return ground_views(); });
     if (const auto& ground = ground_.reference())
       spdlog::info(
           "ground under the first {} keyframes: the camera {:.3f} above it (normal {:.3f} {:.3f} {:.3f}, {} points)",

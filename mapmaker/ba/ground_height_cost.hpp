@@ -6,9 +6,11 @@
 //   r = (normal_c . (q * p_w + t) - height) / sigma
 //
 // Parameter blocks as ReprojectionCost's (pose 7 in the SE3Manifold layout,
-// point 3), so the points are still eliminated first by the Schur solvers.
+// point 3, read as pose_block.hpp says), so the points are still eliminated
+// first by the Schur solvers.
 #include <Eigen/Core>
-#include <Eigen/Geometry>
+
+#include "mapmaker/ba/pose_block.hpp"
 
 namespace facadeslam {
 
@@ -19,10 +21,7 @@ class GroundHeightCost {
 
   template <class T>
   bool operator()(const T* pose, const T* point, T* residual) const {
-    const Eigen::Map<const Eigen::Quaternion<T>> q(pose);
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t(pose + 4);
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> p_w(point);
-    const Eigen::Matrix<T, 3, 1> p_c = q * p_w + t;
+    const Eigen::Matrix<T, 3, 1> p_c = to_camera_frame(pose, point);
     residual[0] = (normal_c_.cast<T>().dot(p_c) - T(height_)) * T(inv_sigma_);
     return true;
   }

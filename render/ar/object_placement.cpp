@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
+#include "core/util/angles.hpp"
 #include "core/util/median.hpp"
 #include "render/map_view_framing.hpp"
 
@@ -125,7 +125,7 @@ std::optional<ObjectPlacement> place_object(const std::vector<PlacementPoint>& p
 
   // The dominant plane may be level after all: then the object stands on it
   // as on any ground, straight ahead.
-  const double cos_max_tilt = std::cos(kMaxGroundTiltDeg * std::numbers::pi / 180.0);
+  const double cos_max_tilt = std::cos(deg_to_rad(kMaxGroundTiltDeg));
   const std::optional<PlaneFit> dominant = find_dominant_plane(points_w);
   const bool dominant_level = dominant && std::abs(dominant->plane.normal_w.dot(up_w)) >= cos_max_tilt;
   try_plane(dominant, dominant_level, "no ground plane in the map: its dominant plane");

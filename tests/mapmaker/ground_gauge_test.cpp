@@ -4,13 +4,13 @@
 #include "mapmaker/ground_gauge.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "mapmaker/ba/bundle_adjuster.hpp"
 
@@ -21,8 +21,8 @@ constexpr double kHeight = 1.65;  // KITTI's camera height, metres
 
 // A camera pitched down by 3 degrees and rolled by 1: the road normal in its frame.
 Eigen::Vector3d tilted_normal() {
-  const Eigen::Matrix3d R_c_road = (Eigen::AngleAxisd(3.0 * std::numbers::pi / 180.0, Eigen::Vector3d::UnitX()) *
-                                    Eigen::AngleAxisd(1.0 * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()))
+  const Eigen::Matrix3d R_c_road = (Eigen::AngleAxisd(deg_to_rad(3.0), Eigen::Vector3d::UnitX()) *
+                                    Eigen::AngleAxisd(deg_to_rad(1.0), Eigen::Vector3d::UnitZ()))
                                        .toRotationMatrix();
   return R_c_road * Eigen::Vector3d::UnitY();
 }
@@ -62,7 +62,7 @@ TEST(GroundGauge, TheReferenceIsTheRoadUnderTheFirstKeyframes) {
   const auto reference = fit_ground_reference(driving_views(rng, 0.5), {});
   ASSERT_TRUE(reference);
   EXPECT_NEAR(reference->height, 0.5 * kHeight, 0.01 * 0.5 * kHeight);
-  EXPECT_LT(std::acos(std::min(1.0, reference->normal_c.dot(tilted_normal()))) * 180.0 / std::numbers::pi, 0.5);
+  EXPECT_LT(rad_to_deg(std::acos(std::min(1.0, reference->normal_c.dot(tilted_normal())))), 0.5);
 }
 
 TEST(GroundGauge, NoReferenceWithoutARoad) {
@@ -81,8 +81,7 @@ TEST(GroundGauge, NoReferenceForAHandHeldCamera) {
     raised[k].T_c_w = SE3d(SO3d(), raised[k].T_c_w.translation() + 0.1 * kHeight * k * tilted_normal());
   EXPECT_FALSE(fit_ground_reference(raised, {}));
   std::vector<GroundView> tilted = driving_views(rng, 1.0);
-  tilted[2].T_c_w =
-      SE3d(SO3d::exp(Eigen::Vector3d(5.0 * std::numbers::pi / 180.0, 0, 0)), Eigen::Vector3d::Zero()) * tilted[2].T_c_w;
+  tilted[2].T_c_w = SE3d(SO3d::exp(Eigen::Vector3d(deg_to_rad(5.0), 0, 0)), Eigen::Vector3d::Zero()) * tilted[2].T_c_w;
   EXPECT_FALSE(fit_ground_reference(tilted, {}));
 }
 
@@ -130,7 +129,7 @@ TEST(GroundGauge, ConstrainsTheFreeKeyframesWithOneKeyframesWorthOfPrior) {
     views.push_back({kf.T_c_w, {}});
     for (const BaPoint& p : problem.points) views.back().points_c.push_back(kf.T_c_w * p.p_w);
   }
-  gauge.try_reference(views);
+  gauge.try_reference(views.size(), [&] { return views; });
   ASSERT_TRUE(gauge.reference());
   EXPECT_NEAR(gauge.reference()->height, kHeight, 1e-6);
 
@@ -149,8 +148,7 @@ TEST(GroundGauge, ConstrainsTheFreeKeyframesWithOneKeyframesWorthOfPrior) {
   // mounted one) is left alone: its ground normal is not the reference's.
   BaProblem pitched = drive(0.0);
   pitched.keyframes[2].T_c_w =
-      SE3d(SO3d::exp(Eigen::Vector3d(8.0 * std::numbers::pi / 180.0, 0, 0)), Eigen::Vector3d::Zero()) *
-      pitched.keyframes[2].T_c_w;
+      SE3d(SO3d::exp(Eigen::Vector3d(deg_to_rad(8.0), 0, 0)), Eigen::Vector3d::Zero()) * pitched.keyframes[2].T_c_w;
   EXPECT_EQ(gauge.constrain(pitched, /*fixed_too=*/false), 2u);
   for (const BaGroundObservation& g : pitched.ground) EXPECT_NE(g.keyframe, 2u);
   gauge.reset();
